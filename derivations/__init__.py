@@ -1,0 +1,1 @@
+"""One package per memoir, one module per section; each package exposes SPECS."""
