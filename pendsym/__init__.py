@@ -1,0 +1,1 @@
+"""pendsym: symbolic rebuild and independent verification of the perturbation theory of the pendulum."""

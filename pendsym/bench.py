@@ -1,0 +1,136 @@
+"""``make bench``: speed against error for the swing time of the simple pendulum.
+
+The swing time (one swing, Charbonnier's T) of θ'' + k² sin θ = 0 from rest at
+−α, for α from 10⁻³ to 3 rad, by:
+  * the memoir's T(1 + α²/16), from the generated kernels of n°21 (Python and C);
+  * the exact swing time π/(k·AGM(1, cos α/2)) (generated C and Python kernels);
+  * mpmath's ellipk, 2K(sin² α/2)/k at 15 digits;
+  * mpmath odefun integration of the ODE at 15, 20 and 30 digits.
+The reference is ellipk at 50 digits.  Timings are wall-clock per evaluation
+on this machine (ctypes call overhead included for C); they are not
+reproducible to the byte, so make derive never writes them.
+"""
+from __future__ import annotations
+
+import argparse
+import ctypes
+import importlib.util
+import json
+import math
+import tempfile
+import time
+from pathlib import Path
+
+import mpmath as mp
+
+from .emit.kernels import compile_c
+from .io import write_atomic
+
+ALPHAS = [10 ** (-3 + 3.4771 * i / 23) for i in range(24)]   # 1e-3 … 3
+K = 1.0
+
+
+def reference(alpha: float) -> mp.mpf:
+    with mp.workdps(50):
+        return 2 * mp.ellipk(mp.sin(mp.mpf(alpha) / 2) ** 2) / K
+
+
+def _timed(fn, alphas, repeat: int) -> tuple[float, list[float]]:
+    vals = [fn(a) for a in alphas]
+    t0 = time.perf_counter()
+    for _ in range(repeat):
+        for a in alphas:
+            fn(a)
+    return (time.perf_counter() - t0) / (repeat * len(alphas)), vals
+
+
+def _load_py(path: Path):
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def methods(generated: Path, workdir: Path):
+    ch = _load_py(generated / "python" / "charbonnier1908.py")
+    per = _load_py(generated / "python" / "pendulum.py")
+    lib = compile_c((generated / "c" / "charbonnier1908.c").read_text().replace('#include "charbonnier1908.h"', "")
+                    + (generated / "c" / "pendulum.c").read_text().replace('#include "pendulum.h"', ""), workdir)
+    c_dT = lib.n21_dT
+    c_T = lib.swing_time_agm
+    for f in (c_dT, c_T):
+        f.restype = ctypes.c_double
+        f.argtypes = [ctypes.c_double, ctypes.c_double]
+
+    def ode(dps):
+        def run(a):
+            with mp.workdps(dps):
+                f = mp.odefun(lambda t, y: [y[1], -K**2 * mp.sin(y[0])], 0, [-mp.mpf(a), mp.mpf(0)])
+                return float(mp.findroot(lambda t: f(t)[1], mp.pi / K * (1 + a * a / 16)))
+        return run
+
+    def ellipk15(a):
+        with mp.workdps(15):
+            return float(2 * mp.ellipk(mp.sin(mp.mpf(a) / 2) ** 2) / K)
+    return [
+        ("memoir T(1+α²/16), C kernel", lambda a: math.pi / K + c_dT(a, K), 20000, ALPHAS),
+        ("memoir T(1+α²/16), Python kernel", lambda a: math.pi / K + ch.n21_dT(a, K), 20000, ALPHAS),
+        ("exact, AGM, C kernel", lambda a: c_T(a, K), 20000, ALPHAS),
+        ("exact, AGM, Python kernel", lambda a: per.swing_time_agm(a, K), 5000, ALPHAS),
+        ("mpmath ellipk (15 digits)", ellipk15, 200, ALPHAS),
+        ("mpmath odefun, 15 digits", ode(15), 1, ALPHAS[::6]),
+        ("mpmath odefun, 20 digits", ode(20), 1, ALPHAS[::6]),
+        ("mpmath odefun, 30 digits", ode(30), 1, ALPHAS[::6]),
+    ]
+
+
+def run(generated: Path) -> list[dict]:
+    rows = []
+    with tempfile.TemporaryDirectory() as d:
+        for name, fn, repeat, alphas in methods(generated, Path(d)):
+            per_eval, vals = _timed(fn, alphas, repeat)
+            errs = [float(abs(mp.mpf(v) - reference(a)) / reference(a)) for a, v in zip(alphas, vals)]
+            worst = max(range(len(errs)), key=errs.__getitem__)
+            rows.append({"method": name, "seconds_per_eval": per_eval, "max_rel_error": errs[worst],
+                         "worst_alpha": alphas[worst], "alphas": len(alphas),
+                         "errors": [[a, e] for a, e in zip(alphas, errs)]})
+    return rows
+
+
+def tex_table(rows: list[dict]) -> str:
+    lines = [r"\begin{center}", r"\begin{tabular}{lrrr}", r"\toprule",
+             r"method & time per evaluation & largest relative error & at $\alpha$ \\", r"\midrule"]
+    for r in rows:
+        name = r["method"].replace("α", r"$\alpha$").replace("²", "$^2$")
+        err = max(r["max_rel_error"], 1e-17)
+        lines.append(f"{name} & {r['seconds_per_eval'] * 1e6:.3g} $\\mu$s & {err:.2g} & {r['worst_alpha']:.3g} \\\\")
+    lines += [r"\bottomrule", r"\end{tabular}", r"\end{center}", "",
+              r"\begin{center}\begin{tikzpicture}\begin{loglogaxis}[width=11cm,height=6cm,"
+              r"xlabel={time per evaluation (s)},ylabel={largest relative error over $10^{-3}\le\alpha\le3$},"
+              r"legend style={font=\tiny,at={(1.02,0.5)},anchor=west}]"]
+    for i, r in enumerate(rows):
+        err = max(r["max_rel_error"], 1e-17)
+        lines.append(f"\\addplot+[only marks] coordinates {{({r['seconds_per_eval']:.4g},{err:.3g})}};")
+        lines.append(f"\\addlegendentry{{{r['method'].replace('α', '$\\alpha$').replace('²', '$^2$')}}}")
+    lines += [r"\end{loglogaxis}\end{tikzpicture}\end{center}",
+              "Errors below $10^{-17}$ are shown as $10^{-17}$. The reference is mpmath ellipk at 50 digits; "
+              "the swing time is one swing, $T=\\pi/k$ for small $\\alpha$, here with $k=1$.", ""]
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="pendsym-bench")
+    p.add_argument("--out", default="generated/bench")
+    p.add_argument("--generated", default="generated")
+    args = p.parse_args(argv)
+    rows = run(Path(args.generated))
+    out = Path(args.out)
+    write_atomic(out / "charbonnier1908-period.json", json.dumps(rows, indent=1) + "\n")
+    write_atomic(out / "charbonnier1908-period.tex", tex_table(rows))
+    for r in rows:
+        print(f"{r['method']:<36} {r['seconds_per_eval'] * 1e6:12.3f} us  max rel err {r['max_rel_error']:.2e}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,129 @@
+"""The ``pendsym`` command: list, derive, check.
+
+Bad input (an unknown id or memoir, a bad argument) gets one line on stderr
+and exit code 2, never a traceback.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import sympy as sp
+
+from . import derive as drv
+from . import pipeline, registry
+
+
+class UsageError(Exception):
+    """Bad input: reported in one line, exit 2."""
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit 2
+        raise UsageError(message)
+
+
+def _parser() -> Parser:
+    p = Parser(prog="pendsym", description="Rebuild and check the classical perturbation theory of the pendulum.")
+    sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser)
+    ls = sub.add_parser("list", help="the Results, with their status")
+    ls.add_argument("--memoir", help="a memoir key, e.g. charbonnier1908")
+    ls.add_argument("--json", action="store_true", help="JSON output")
+    ls.add_argument("--generated", default="generated", help="the generated/ directory to read status from")
+    dv = sub.add_parser("derive", help="derive Results (all of them when no id is given, writing generated/)")
+    dv.add_argument("ids", nargs="*")
+    dv.add_argument("--out", default="generated")
+    dv.add_argument("--level", choices=("quick", "full"), default="full")
+    ck = sub.add_parser("check", help="run one Result's independent verification and print the evidence")
+    ck.add_argument("id")
+    ck.add_argument("--level", choices=("quick", "full"), default="full")
+    return p
+
+
+def cmd_list(args) -> int:
+    memoirs = None
+    if args.memoir:
+        if args.memoir not in registry.MEMOIRS:
+            raise UsageError(f"unknown memoir: {args.memoir} (known: {', '.join(registry.MEMOIRS)})")
+        memoirs = [args.memoir]
+    specs = registry.all_specs(memoirs)
+    known = {}
+    path = Path(args.generated) / "results.json"
+    if path.exists():
+        known = pipeline.load_results_json(path)
+    rows = []
+    for sid, spec in specs.items():
+        rec = known.get(sid, {})
+        rows.append({"id": sid, "memoir": spec.memoir, "ref": spec.source.ref(), "title": spec.title,
+                     "status": rec.get("status", "not derived"), "verified": rec.get("verified", False)})
+    if args.json:
+        print(json.dumps(rows, indent=1, ensure_ascii=False))
+    else:
+        for r in rows:
+            mark = "verified" if r["verified"] else "unverified"
+            print(f"{r['id']:<44} {r['status']:<13} {mark:<10} {r['ref']}")
+    return 0
+
+
+def cmd_derive(args) -> int:
+    if args.ids:
+        built = registry.build(args.ids)
+        for rec in pipeline.assess(built.values(), run_checks=False):
+            print(f"{rec.result.id}: {rec.status}")
+            print(f"  derived: {sp.sstr(rec.result.derived)}")
+            if rec.result.printed is not None:
+                print(f"  printed: {sp.sstr(rec.result.printed)}")
+        return 0
+    written = drv.derive_all(Path(args.out), level=args.level, log=lambda m: print(m, file=sys.stderr))
+    print(f"wrote {len(written)} files under {args.out}/")
+    return 0
+
+
+def cmd_check(args) -> int:
+    built = registry.build([args.id])
+    r = built[args.id]
+    status, how = pipeline.compare(r)
+    ev = pipeline.check(r, args.level)
+    print(f"{r.id} ({r.spec.source.ref()}): {r.spec.title}")
+    print(f"  status: {status} ({how})")
+    if r.printed is not None:
+        print(f"  printed: {sp.sstr(r.printed)}")
+    print(f"  derived: {sp.sstr(r.derived)}")
+    if ev is None:
+        print("  no independent check")
+        return 0
+    print(f"  check: {'passed' if ev.passed else 'FAILED'} [{ev.kind}] truth: {ev.truth}")
+    if ev.params:
+        print("  parameters: " + ", ".join(f"{k} = {v}" for k, v in ev.params))
+    print(f"  largest residual: {ev.max_residual}")
+    if ev.kind == "order":
+        print(f"  fitted order in {ev.param}: {ev.order} (expected {ev.expected_order}, band {ev.band})")
+        for p, v in ev.series:
+            print(f"    {ev.param} = {p:<12g} |residual| = {v:.6g}")
+        if ev.printed_order is not None:
+            print(f"  printed form: fitted order {ev.printed_order}")
+        print(f"  truth confirmed to {ev.confirm_digits} digits at two precisions")
+    if ev.note:
+        print(f"  note: {ev.note}")
+    return 0 if ev.passed else 1
+
+
+def main(argv=None) -> int:
+    try:
+        args = _parser().parse_args(argv)
+        return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check}[args.cmd](args)
+    except UsageError as exc:
+        print(f"pendsym: error: {exc}", file=sys.stderr)
+        return 2
+    except registry.UnknownResult as exc:
+        print(f"pendsym: error: {exc}", file=sys.stderr)
+        return 2
+    except drv.DomainError as exc:
+        print(f"pendsym: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,78 @@
+"""``make derive``: every memoir through build → compare → verify → emit, into generated/."""
+from __future__ import annotations
+
+import importlib
+import shutil
+from pathlib import Path
+from typing import Callable
+
+from . import parallel, pipeline, registry
+from .emit import files, kernels as kn, latex
+from .io import write_atomic
+
+
+class DomainError(ValueError):
+    """A parameter outside its domain (reported in one line by the CLI)."""
+
+
+def memoir_meta(memoir: str):
+    mod = importlib.import_module(registry.MEMOIRS[memoir])
+    return getattr(mod, "TITLE", memoir), getattr(mod, "SECTIONS", ())
+
+
+def emit_kernels(memoir: str, records, log) -> list[kn.Kernel]:
+    results = {rec.result.id: rec.result for rec in records}
+    wanted = [i for i, r in results.items() if r.spec.kernel is not None and kn.closed_form(r.derived)]
+    ks = [k for k in parallel.per_result(results, wanted, kn.kernel_of) if k is not None]
+    if ks and shutil.which("cc"):
+        ks = kn.with_c_accuracy(ks, results, lambda kk: files.c_standalone(memoir, kk))
+    log(f"{memoir}: {len(ks)} kernels")
+    return ks
+
+
+def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = print) -> list[Path]:
+    out = Path(out)
+    written: list[Path] = []
+    all_records, all_kernels = [], {}
+    for memoir in registry.MEMOIRS:
+        built = registry.build(memoirs=[memoir])
+        log(f"{memoir}: {len(built)} results built; verifying at level {level}")
+        records = pipeline.assess(built.values(), level)
+        ks = emit_kernels(memoir, records, log)
+        for k in ks:
+            all_kernels.setdefault(k.result_id, []).append(k.name)
+        title, sections = memoir_meta(memoir)
+        outputs = {
+            out / "python" / f"{memoir}.py": files.python_module(memoir, ks),
+            out / "c" / f"{memoir}.c": files.c_source(memoir, ks),
+            out / "c" / f"{memoir}.h": files.c_header(memoir, ks),
+            out / "tex" / f"{memoir}.tex": latex.report(
+                memoir, title, records, ks, bench_input(out, memoir), sections),
+        }
+        for path, text in outputs.items():
+            write_atomic(path, text)
+            written.append(path)
+        all_records.extend(records)
+    for path, text in pendulum_kernels(out).items():
+        write_atomic(path, text)
+        written.append(path)
+    path = out / "results.json"
+    write_atomic(path, pipeline.results_json(all_records, all_kernels))
+    written.append(path)
+    return written
+
+
+def bench_input(out: Path, memoir: str) -> str | None:
+    """The benchmark table a report includes (relative to generated/tex), when make bench wrote one."""
+    name = f"{memoir}-period.tex"
+    return f"../bench/{name}" if (out / "bench" / name).exists() else None
+
+
+def pendulum_kernels(out: Path) -> dict[Path, str]:
+    """The memoir-independent exact swing time by the AGM (used by make bench and the tests)."""
+    ctx = {"max_steps": 40, "tol": "4e-16", "pi": "3.14159265358979323846"}
+    return {
+        out / "c" / "pendulum.c": files.render("pendulum.c.j2", **ctx),
+        out / "c" / "pendulum.h": files.render("pendulum.h.j2", **ctx),
+        out / "python" / "pendulum.py": files.render("pendulum.py.j2", **ctx),
+    }

@@ -1,0 +1,1 @@
+"""Emitters: kernels (Python, C), files laid out by Jinja, the LaTeX report."""

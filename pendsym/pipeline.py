@@ -1,0 +1,117 @@
+"""The spine: build → compare → verify → emit.  Each stage is a plain function."""
+from __future__ import annotations
+
+import json
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Iterable, Sequence
+
+import mpmath as mp
+import sympy as sp
+
+from . import parallel, registry, verify
+from .io import write_atomic
+from .result import Evidence, Result
+
+
+@dataclass(frozen=True)
+class Record:
+    """A Result with its assessment: the printed/derived comparison and the evidence."""
+
+    result: Result
+    status: str          # match | discrepancy | derived-only
+    comparison: str
+    evidence: Evidence | None
+
+    @property
+    def verified(self) -> bool:
+        return self.evidence is not None and self.evidence.passed
+
+
+def compare(result: Result) -> tuple[str, str]:
+    """Stage 2: printed ≡ derived?"""
+    if result.printed is None:
+        return "derived-only", "the memoir prints no formula for it"
+    return verify.compare_forms(result.printed_value, result.derived_value, result.id, result.spec.instances)
+
+
+def check(result: Result, level: str = "full") -> Evidence | None:
+    """Stage 3: the independent check, at 40 working digits unless it scopes its own."""
+    if result.spec.check is None:
+        return None
+    with mp.workdps(40):
+        return result.spec.check(result, level)
+
+
+def _check_full(r: Result) -> Evidence | None:
+    return check(r, "full")
+
+
+def _check_quick(r: Result) -> Evidence | None:
+    return check(r, "quick")
+
+
+def assess(results: Iterable[Result], level: str = "full", run_checks: bool = True) -> list[Record]:
+    """Compare every Result and run its check (the checks in parallel over the cores)."""
+    results = list(results)
+    by_id = {r.id: r for r in results}
+    evs: list = [None] * len(results)
+    if run_checks:
+        evs = parallel.per_result(by_id, [r.id for r in results], _check_full if level == "full" else _check_quick)
+    return [Record(r, *compare(r), ev) for r, ev in zip(results, evs)]
+
+
+# ----------------------------------------------------------------- results.json
+def _evidence_json(ev: Evidence | None) -> dict | None:
+    if ev is None:
+        return None
+    d = asdict(ev)
+    d["params"] = dict(ev.params)
+    d["series"] = [list(x) for x in ev.series]
+    d["printed_series"] = [list(x) for x in ev.printed_series]
+    d["band"] = list(ev.band) if ev.band else None
+    return d
+
+
+def record_json(rec: Record, kernels: Sequence[str] = ()) -> dict:
+    r, spec = rec.result, rec.result.spec
+    return {
+        "id": r.id,
+        "memoir": spec.memoir,
+        "title": spec.title,
+        "ref": spec.source.ref(),
+        "para": spec.source.para,
+        "page": spec.source.page,
+        "status": rec.status,
+        "comparison": rec.comparison,
+        "verified": rec.verified,
+        "definition": spec.definition,
+        "printed": None if r.printed is None else sp.sstr(r.printed),
+        "derived": sp.sstr(r.derived),
+        "readings": [{"shows": x.shows, "read_as": x.read_as, "certain": x.certain} for x in spec.readings],
+        "symbols": [{"name": s.name, "assumptions": sorted(k for k, v in s.assumptions0.items() if v)}
+                    for s in r.symbols()],
+        "deps": list(spec.deps),
+        "evidence": _evidence_json(rec.evidence),
+        "kernels": list(kernels),
+        "note": spec.note,
+    }
+
+
+def results_json(records: Sequence[Record], kernels: dict[str, list[str]]) -> str:
+    body = [record_json(rec, kernels.get(rec.result.id, ())) for rec in records]
+    return json.dumps({"results": body}, indent=1, ensure_ascii=False, sort_keys=False) + "\n"
+
+
+def load_results_json(path: Path) -> dict[str, dict]:
+    data = json.loads(Path(path).read_text(encoding="utf-8"))
+    return {r["id"]: r for r in data["results"]}
+
+
+def write(path: Path, text: str) -> None:
+    write_atomic(path, text)
+
+
+def build(ids: Sequence[str] | None = None) -> dict[str, Result]:
+    """Stage 1: the Results asked for and their dependency closure."""
+    return registry.build(ids)

@@ -1,0 +1,51 @@
+"""generated/: results.json, the report and the file headers tell the same story."""
+import re
+
+import pytest
+
+from pendsym import pipeline
+from pendsym.io import content_hash
+
+
+@pytest.fixture(scope="module")
+def results(generated):
+    return pipeline.load_results_json(generated / "results.json")
+
+
+def test_every_result_verified_with_evidence(results):
+    for rid, rec in results.items():
+        assert rec["verified"] is True, rid
+        ev = rec["evidence"]
+        assert ev is not None and ev["passed"], rid
+        if ev["kind"] == "order":
+            assert ev["expected_order"] is not None and len(ev["series"]) >= 4, rid
+            lo, hi = ev["band"]
+            assert lo <= ev["order"] <= hi, rid
+
+
+def test_discrepancies_carry_evidence_against_the_printed_form(results):
+    disc = [r for r in results.values() if r["status"] == "discrepancy"]
+    assert disc
+    for r in disc:
+        assert r["printed"] and r["derived"] and r["readings"], r["id"]
+        assert r["evidence"]["printed_agrees"] is False, r["id"]
+
+
+def test_report_lists_every_discrepancy_in_its_opening_table(results, generated):
+    for memoir in {r["memoir"] for r in results.values()}:
+        tex = (generated / "tex" / f"{memoir}.tex").read_text()
+        table = tex.split(r"\section*{Discrepancies}")[1].split(r"\section{")[0].replace(r".\allowbreak ", ".")
+        for r in results.values():
+            if r["memoir"] == memoir and r["status"] == "discrepancy":
+                assert r["id"].replace("_", r"\_") in table, r["id"]
+
+
+@pytest.mark.parametrize("pattern", ["python/*.py", "c/*.c", "c/*.h", "tex/*.tex"])
+def test_headers_carry_the_content_hash(generated, pattern):
+    files = sorted(generated.glob(pattern))
+    assert files
+    for f in files:
+        text = f.read_text()
+        m = re.search(r"Content hash: ([0-9a-f]{16})", text)
+        assert m, f
+        assert content_hash(text.replace(m.group(1), "<hash>")) == m.group(1), f

@@ -1,0 +1,15 @@
+"""pendsym.io: atomic writes."""
+from pendsym.io import content_hash, write_atomic
+
+
+def test_write_atomic_creates_replaces_and_reports_no_change(tmp_path):
+    p = tmp_path / "d" / "f.txt"
+    assert write_atomic(p, "one\n")
+    assert not write_atomic(p, "one\n")
+    assert write_atomic(p, "two\n")
+    assert p.read_text() == "two\n"
+    assert [x.name for x in p.parent.iterdir()] == ["f.txt"]   # no temporary left
+
+
+def test_content_hash_is_stable():
+    assert content_hash("abc") == content_hash("abc") != content_hash("abd")

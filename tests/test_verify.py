@@ -1,0 +1,49 @@
+"""pendsym.verify: order fitting, form comparison, evidence that can fail."""
+import mpmath as mp
+import sympy as sp
+
+from pendsym import verify
+
+x = sp.Symbol("x", positive=True)
+
+
+def test_fit_order_recovers_a_power_law():
+    xs = verify.geometric("1e-3", "1e-1", 6)
+    assert abs(verify.fit_order(xs, [3 * v**2.5 for v in xs]) - 2.5) < 1e-12
+
+
+def test_compare_forms_tells_match_from_discrepancy():
+    assert verify.compare_forms(sp.sin(2 * x), 2 * sp.sin(x) * sp.cos(x), "t1")[0] == "match"
+    assert verify.compare_forms(sp.sin(2 * x), sp.sin(x) * sp.cos(x), "t2")[0] == "discrepancy"
+
+
+def test_compare_forms_is_reproducible():
+    a = verify.compare_forms(x**2 + 1, x**2 + 1 + sp.Rational(1, 10**6), "seed")
+    b = verify.compare_forms(x**2 + 1, x**2 + 1 + sp.Rational(1, 10**6), "seed")
+    assert a == b and a[0] == "discrepancy"
+
+
+def _truth(p, dps):
+    with mp.workdps(dps):
+        return mp.sin(p)          # sin p = p − p³/6 + …
+
+
+def test_order_check_passes_on_the_right_order():
+    ev = verify.order_check(param="p", values=verify.geometric("1e-3", "1e-1", 5), truth=_truth,
+                            derived=lambda p: p, expected=3, band=0.2, truth_desc="sin")
+    assert ev.passed and abs(ev.order - 3) < 0.05
+
+
+def test_order_check_fails_on_the_wrong_order():
+    # claiming sin p = p + p³/6 leaves a residual of order 3 still, but claiming
+    # sin p = 1.01 p leaves order 1: the check must fail when 3 is expected
+    ev = verify.order_check(param="p", values=verify.geometric("1e-3", "1e-1", 5), truth=_truth,
+                            derived=lambda p: p * mp.mpf("1.01"), expected=3, band=0.2, truth_desc="sin")
+    assert not ev.passed and abs(ev.order - 1) < 0.05
+
+
+def test_order_check_reports_the_printed_form():
+    ev = verify.order_check(param="p", values=verify.geometric("1e-3", "1e-1", 5), truth=_truth,
+                            derived=lambda p: p - p**3 / 6, printed=lambda p: p + p**3 / 6,
+                            expected=5, band=0.2, truth_desc="sin")
+    assert ev.passed and ev.printed_agrees is False and abs(ev.printed_order - 3) < 0.05
