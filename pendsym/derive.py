@@ -6,7 +6,9 @@ import shutil
 from pathlib import Path
 from typing import Callable
 
-from . import parallel, pipeline, registry
+import sympy as sp
+
+from . import cache, parallel, pipeline, registry
 from .emit import files, kernels as kn, latex
 from .io import write_atomic
 
@@ -23,11 +25,18 @@ def memoir_meta(memoir: str):
 def emit_kernels(memoir: str, records, log) -> list[kn.Kernel]:
     results = {rec.result.id: rec.result for rec in records}
     wanted = [i for i, r in results.items() if r.spec.kernel is not None and kn.closed_form(r.derived)]
-    ks = [k for k in parallel.per_result(results, wanted, kn.kernel_of) if k is not None]
+    ks = [k for k in parallel.per_result(results, wanted, cached_kernel) if k is not None]
     if ks and shutil.which("cc"):
         ks = kn.with_c_accuracy(ks, results, lambda kk: files.c_standalone(memoir, kk))
     log(f"{memoir}: {len(ks)} kernels")
     return ks
+
+
+def cached_kernel(result) -> kn.Kernel | None:
+    """kn.kernel_of, cached under the content hash of the Result and the code."""
+    key = cache.key("kernel", result.id, sp.srepr(result.derived), repr(result.spec.kernel),
+                    packages=("pendsym", registry.MEMOIRS[result.spec.memoir]))
+    return cache.memo(key, lambda: kn.kernel_of(result))
 
 
 def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = print) -> list[Path]:

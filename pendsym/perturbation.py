@@ -37,7 +37,8 @@ def _phase_integral(phi_t: sp.Expr, weight, t: sp.Symbol, k: sp.Expr) -> sp.Expr
     """∫_0^t φ(τ) w(kτ) dτ, computed in the phase x = kτ as Charbonnier does (∫ … d(kt))."""
     x = sp.Dummy("x", real=True)
     integrand = sp.expand(sp.expand_trig(phi_t.subs(t, x / k) * weight(x)))
-    antider = sp.integrate(integrand, (x, 0, k * t)) / k
+    # conds="none": the generic branch, valid for every k that is not a resonance of φ
+    antider = sp.integrate(integrand, (x, 0, k * t), conds="none") / k
     return sp.simplify(antider)
 
 

@@ -9,7 +9,7 @@ from typing import Iterable, Sequence
 import mpmath as mp
 import sympy as sp
 
-from . import parallel, registry, verify
+from . import cache, parallel, registry, verify
 from .io import write_atomic
 from .result import Evidence, Result
 
@@ -36,11 +36,20 @@ def compare(result: Result) -> tuple[str, str]:
 
 
 def check(result: Result, level: str = "full") -> Evidence | None:
-    """Stage 3: the independent check, at 40 working digits unless it scopes its own."""
+    """Stage 3: the independent check, at 40 working digits unless it scopes its own.
+
+    The evidence is a pure function of the code and the Result: it is cached
+    under the content hash of both (see pendsym.cache).
+    """
     if result.spec.check is None:
         return None
-    with mp.workdps(40):
-        return result.spec.check(result, level)
+
+    def run():
+        with mp.workdps(40):
+            return result.spec.check(result, level)
+    key = cache.key("check", result.id, level, sp.srepr(result.derived), sp.srepr(result.printed),
+                    packages=("pendsym", registry.MEMOIRS[result.spec.memoir]))
+    return cache.memo(key, run)
 
 
 def _check_full(r: Result) -> Evidence | None:

@@ -392,7 +392,7 @@ def specs() -> tuple[Spec, ...]:
              defs=DEF_ITEMS + THETA_OF_T, instances=PHI_INSTANCES),
         Spec(f"{P}.n19.Es", "E_s for φ = θ^m", src("n°19", 221), r"E_s", Es_monomial,
              printed=lambda: (-alpha) ** m / k / (m + 1) * (1 - sp.cos(k * t) ** (m + 1)),
-             check=_monomial_Es_check, defs=DEF_ITEMS),
+             check=_monomial_quad(mp.sin), defs=DEF_ITEMS),
         Spec(f"{P}.n19.Es_pi_even", "E_s(π) for even m = 2n", src("n°19", 222), r"E_s(\pi)",
              lambda d: Es_pi_parity(d, 0), deps=(f"{P}.n19.Es",),
              printed=lambda: alpha ** (2 * n) / k * 2 / (2 * n + 1), check=_quad_at_pi(mp.sin, (2, 4, 6)),
@@ -408,7 +408,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(f"{P}.n20.Ec", "E_c for φ = θ^m", src("n°20", 222), r"E_c", Ec_monomial,
              printed=lambda: (-alpha) ** m / k * sp.Integral(sp.cos(y) ** (m + 1), (y, 0, k * t)),
              readings=(Reading("∫_0^{kt} cos^{m+1} kt dkt", "∫_0^{kt} cos^{m+1} y dy"),),
-             check=_monomial_Ec_check, defs=DEF_ITEMS),
+             check=_monomial_quad(mp.cos), defs=DEF_ITEMS),
         Spec(f"{P}.n20.recurrence", "(m+1)J_m = sin y cos^m y + m J_{m−2}", src("n°20", 222),
              r"(m+1)J_m - mJ_{m-2} - \sin y\cos^m y", recurrence_derived, printed=lambda: sp.S.Zero,
              check=_recurrence_check),
@@ -439,28 +439,20 @@ def specs() -> tuple[Spec, ...]:
     )
 
 
-def _monomial_Es_check(result, level):
-    pairs = []
-    for mv in (1, 2, 3, 6):
-        for tv in (mp.mpf("0.6"), mp.mpf("2.2")):
-            kv, al = mp.mpf("1.3"), mp.mpf("0.7")
-            truth = mp.quad(lambda s: (-al * mp.cos(kv * s)) ** mv * mp.sin(kv * s), [0, tv])
-            val = sp.N(result.derived.subs({m: mv, k: sp.Float("1.3", 40), alpha: sp.Float("0.7", 40), t: sp.Float(str(tv), 40)}), 40)
-            pairs.append((f"m={mv},t={tv}", val, truth))
-    return verify.value_check(truth_desc="mpmath quad of ∫_0^t θ0^m sin kτ dτ, m = 1, 2, 3, 6",
-                              pairs=pairs, tol=mp.mpf("1e-28"), params=(("k", "1.3"), ("alpha", "0.7")))
-
-
-def _monomial_Ec_check(result, level):
-    pairs = []
-    for mv in (1, 2, 3, 6):
-        for tv in (mp.mpf("0.6"), mp.mpf("2.2")):
-            kv, al = mp.mpf("1.3"), mp.mpf("0.7")
-            truth = mp.quad(lambda s: (-al * mp.cos(kv * s)) ** mv * mp.cos(kv * s), [0, tv])
-            val = sp.N(result.derived.subs({m: mv}).subs({k: sp.Float("1.3", 40), alpha: sp.Float("0.7", 40), t: sp.Float(str(tv), 40)}).doit(), 40)
-            pairs.append((f"m={mv},t={tv}", val, truth))
-    return verify.value_check(truth_desc="mpmath quad of ∫_0^t θ0^m cos kτ dτ, m = 1, 2, 3, 6",
-                              pairs=pairs, tol=mp.mpf("1e-28"), params=(("k", "1.3"), ("alpha", "0.7")))
+def _monomial_quad(trig):
+    """E_s(t) or E_c(t) of θ^m against mpmath quad of its definition, m = 1, 2, 3, 6."""
+    def check(result, level):
+        kv, al = mp.mpf("1.3"), mp.mpf("0.7")
+        pairs = []
+        for mv in (1, 2, 3, 6):
+            for tv in (mp.mpf("0.6"), mp.mpf("2.2")):
+                truth = mp.quad(lambda s: (-al * mp.cos(kv * s)) ** mv * trig(kv * s), [0, tv])
+                at = {k: sp.Float("1.3", 40), alpha: sp.Float("0.7", 40), t: sp.Float(str(tv), 40)}
+                val = sp.N(result.derived.subs(m, mv).subs(at).doit(), 40)
+                pairs.append((f"m={mv},t={tv}", val, truth))
+        return verify.value_check(truth_desc=f"mpmath quad of ∫_0^t θ0^m {trig.__name__} kτ dτ, m = 1, 2, 3, 6",
+                                  pairs=pairs, tol=mp.mpf("1e-28"), params=(("k", "1.3"), ("alpha", "0.7")))
+    return check
 
 
 def _quad_at_pi(trig, ms):

@@ -63,7 +63,8 @@ def near_zero_series(e: sp.Expr, args: Sequence[KernelArg]) -> tuple[sp.Expr, sp
     if ser == 0:
         return None
     phase = by["k"] * t if "k" in by else t
-    return sp.horner(sp.collect(sp.expand(ser), t), wrt=t), phase
+    # rational coefficients become 20-digit floats (exact to double), so no huge integer literals
+    return sp.horner(sp.N(sp.collect(sp.expand(ser), t), 20), wrt=t), phase
 
 
 REWRITES: tuple[tuple[str, Callable[[sp.Expr], sp.Expr]], ...] = (
@@ -84,6 +85,10 @@ class KernelC(C99CodePrinter):
 
     def _print_Pi(self, expr):
         return "3.14159265358979323846264338327950288"
+
+    def _print_Integer(self, expr):
+        # a C integer literal overflows past 64 bits: print large ones as doubles
+        return super()._print_Integer(expr) if abs(int(expr)) < 2**53 else repr(float(expr))
 
     def _print_Pow(self, expr):
         b, e = expr.as_base_exp()
@@ -175,7 +180,7 @@ def sample_points(args: Sequence[KernelArg], seed: str, n: int = 160) -> list[tu
     def special(a: KernelArg) -> list[float]:
         vals = [a.lo, a.hi]
         if a.lo <= 0 <= a.hi and not a.log:
-            vals += [1e-9, 1e-4, 0.5 * math.pi, math.pi, 3.0]
+            vals += [v for v in (1e-9, 1e-4, 0.5 * math.pi, math.pi, 3.0) if a.lo <= v <= a.hi]
         return vals
     pts = []
     corner_sets = [special(a) for a in args]
@@ -290,8 +295,10 @@ def compile_c(c_text: str, workdir: Path) -> ctypes.CDLL:
     src = workdir / "k.c"
     lib = workdir / "k.so"
     src.write_text(c_text)
-    subprocess.run(["cc", "-std=c99", "-O2", "-fPIC", "-shared", "-o", str(lib), str(src), "-lm"],
-                   check=True, capture_output=True)
+    done = subprocess.run(["cc", "-std=c99", "-O2", "-fPIC", "-shared", "-o", str(lib), str(src), "-lm"],
+                          capture_output=True, text=True)
+    if done.returncode:
+        raise RuntimeError(f"cc failed: {done.stderr.strip()[:2000]}")
     return ctypes.CDLL(str(lib))
 
 
