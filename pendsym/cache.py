@@ -35,7 +35,7 @@ def directory() -> Path | None:
 def code_hash(package: str) -> str:
     """sha256 of the source files of a package (sorted by path)."""
     mod = importlib.import_module(package)
-    root = Path(mod.__file__).parent
+    root = Path(next(iter(mod.__path__)))
     h = hashlib.sha256()
     for f in sorted(root.rglob("*")):
         if f.suffix in (".py", ".j2") and "__pycache__" not in f.parts:

@@ -206,3 +206,8 @@ def _instantiate(expr: sp.Expr, inst) -> sp.Expr:
         expr = expr.replace(fn, lam)
     # evaluate derivatives only: integrals stay for mpmath quad
     return expr.replace(lambda e: isinstance(e, (sp.Derivative, sp.Subs)), lambda e: e.doit())
+
+
+def trig_name(fn) -> str:
+    """'sin' or 'cos' for mpmath's functions (whose __name__ is not their name)."""
+    return {mp.sin: "sin", mp.cos: "cos"}.get(fn, getattr(fn, "__name__", "?"))

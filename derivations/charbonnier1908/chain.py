@@ -294,7 +294,7 @@ def quad_check_of(ex: Example, trig):
             if fp is not None:
                 ppairs.append((f"t={s}", fp(al, kv, s, *pv), truth))
         tol = mp.mpf("1e-27")
-        ev = verify.value_check(truth_desc="mpmath quad of the definition ∫_0^t φ " + trig.__name__ + " kτ dτ",
+        ev = verify.value_check(truth_desc="mpmath quad of the definition ∫_0^t φ " + verify.trig_name(trig) + " kτ dτ",
                                 pairs=pairs, tol=tol,
                                 params=(("k", K_CHECK), ("alpha", "0.3")) + tuple((s.name, v) for s, v in ex.params))
         if not ppairs:

@@ -450,7 +450,7 @@ def _monomial_quad(trig):
                 at = {k: sp.Float("1.3", 40), alpha: sp.Float("0.7", 40), t: sp.Float(str(tv), 40)}
                 val = sp.N(result.derived.subs(m, mv).subs(at).doit(), 40)
                 pairs.append((f"m={mv},t={tv}", val, truth))
-        return verify.value_check(truth_desc=f"mpmath quad of ∫_0^t θ0^m {trig.__name__} kτ dτ, m = 1, 2, 3, 6",
+        return verify.value_check(truth_desc=f"mpmath quad of ∫_0^t θ0^m {verify.trig_name(trig)} kτ dτ, m = 1, 2, 3, 6",
                                   pairs=pairs, tol=mp.mpf("1e-28"), params=(("k", "1.3"), ("alpha", "0.7")))
     return check
 
@@ -465,6 +465,6 @@ def _quad_at_pi(trig, ms):
             sub = {n: sp.Integer(mv) // 2} if n in result.derived.free_symbols else {m: mv}
             val = sp.N(result.derived.subs(sub).subs({k: sp.Float("1.3", 40), alpha: sp.Float("0.7", 40)}), 40)
             pairs.append((f"m={mv}", val, truth))
-        return verify.value_check(truth_desc=f"mpmath quad over 0 ≤ kt ≤ π of θ0^m {trig.__name__} kt, m = {ms}",
+        return verify.value_check(truth_desc=f"mpmath quad over 0 ≤ kt ≤ π of θ0^m {verify.trig_name(trig)} kt, m = {ms}",
                                   pairs=pairs, tol=mp.mpf("1e-28"), params=(("k", "1.3"), ("alpha", "0.7")))
     return check
