@@ -156,6 +156,10 @@ class Kernel:
             if acc:
                 lines.append(f"Measured {lang} error on {acc.points} points: {acc.max_ulp:.3g} ulp, "
                              f"{acc.max_scaled:.3g} ulp × max(1, condition number).")
+        worst = max((a.max_ulp for a in (self.py_accuracy, self.c_accuracy) if a), default=0.0)
+        if worst > 4:
+            lines.append("Beyond 4 ulp only where the problem is ill-conditioned (near zeros of the function, "
+                         "large k·t): the rounding of the inputs alone costs condition number × eps there.")
         return "\n".join(lines)
 
 
