@@ -78,6 +78,32 @@ def mean_length_check(result, level):
                               params=(("k", chain.K_CHECK), ("alpha", "0.3")))
 
 
+def tangent_at_E(deps) -> sp.Expr:
+    """n°35 2°: the slope ψ of the trajectory at the lowest point E, to first order in a.
+
+    The bob moves with l' = a l0 along the thread and l θ' across it, so
+    tan ψ = l'/(l θ'); with θ' = kα + Δθ'_m there, ψ = a/(kα) + O(a²) > 0:
+    not horizontal, as the memoir says.
+    """
+    dthm = deps[f"{MEMOIR}.n34.dthetam"].derived
+    psi = sp.atan(a * l0 / (l0 * (1 + a * sp.pi / (2 * k)) * (k * alpha + dthm)))
+    return sp.simplify(sp.series(psi, a, 0, 2).removeO())
+
+
+def tangent_check(result, level):
+    kv = mp.mpf(chain.K_CHECK)
+    f = verify.lambdify_mp(result.derived, (a, alpha, k))
+
+    def measured(p, dps):
+        sw = tr.swing("growing", "0.3", chain.K_CHECK, dps, a=mp.nstr(p, 40))
+        return mp.atan(p / ((1 + p * sw.t_low) * sw.v_low))
+    return verify.order_check(
+        param="a", values=verify.geometric("1e-4", "3e-3", verify.LEVELS[level]), truth=measured,
+        derived=lambda p: f(p, mp.mpf("0.3"), kv), expected=2, band=0.3,
+        truth_desc=tr.MODEL_TEXT["growing"] + "; ψ = atan(l'/(lθ')) at the lowest point",
+        params=(("k", chain.K_CHECK), ("alpha", "0.3")))
+
+
 def angle_at_C(deps) -> sp.Expr:
     """The angle at C, after two swings: α + 2Δα to first order (n°35 5°)."""
     return sp.expand(alpha + 2 * deps[f"{MEMOIR}.n33.dalpha"].derived)
@@ -157,6 +183,10 @@ def specs() -> tuple[Spec, ...]:
              printed=lambda: l0 * (1 + a * T / 2), check=mean_length_check, defs=defs,
              kernel=KernelSpec((chain.RATE, chain.K, chain.L0), "length of the pendulum with the same swing"),
              readings=(Reading("l = l0(1 + αT/2)", "l0(1 + aT/2)"),)),
+        Spec(f"{P}.n35.tangent_E", "Slope of the trajectory at the lowest point E", Source(P, "n°35 2°", 237),
+             r"\psi_E", tangent_at_E, deps=(f"{P}.n34.dthetam",), check=tangent_check, defs=defs,
+             note="The memoir states only that the tangent is inclined, not horizontal; ψ_E > 0 confirms it.",
+             kernel=KernelSpec((chain.RATE, chain.ALPHA, chain.K), "slope at E")),
         Spec(f"{P}.n35.omega_C", "Angle at C after two swings", Source(P, "n°35 5°", 237), r"\omega_C",
              angle_at_C, deps=(f"{P}.n33.dalpha",), printed=lambda: alpha * (1 - R(3, 2) * a * T),
              check=C_check("angle"), defs=defs,
