@@ -126,7 +126,12 @@ def curve_of_C(deps) -> sp.Expr:
     ode = sp.Eq(w(lam).diff(lam), per_two / dl * w(lam))
     sol = sp.dsolve(ode, w(lam), ics={w(l0): alpha}).rhs
     (l_of_w,) = sp.solve(sp.Eq(omega, sol), lam)
-    return sp.expand(sp.expand_log(l_of_w, force=True))
+    expanded = sp.expand(sp.expand_log(l_of_w, force=True))
+    # l0 + c·l0·(log α − log ω)  →  l0 + c·l0·log(α/ω), the memoir's way of writing it
+    c = sp.simplify(expanded.coeff(sp.log(alpha)) / l0)
+    if sp.simplify(expanded - (l0 + c * l0 * (sp.log(alpha) - sp.log(omega)))) != 0:
+        return expanded
+    return l0 + c * l0 * sp.log(alpha / omega)
 
 
 def _C_points(p, dps, n_pairs: int):
