@@ -131,7 +131,7 @@ def free_swing_time(alpha_val, params: dict):
 @lru_cache(maxsize=None)
 def swing(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, h_val: str = "0.2",
           m_val: str = "1", g_val: str = "1", l_val: str = "1") -> tuple:
-    """One swing from rest at θ = α on the slow manifold: (T, θ at T, y1 at 0, T0).
+    """One swing from rest at θ = α on the slow manifold: (T, θ at T, y1 at 0, T0, t at θ = 0).
 
     Returns mpf values; l = C/(m h) fixes C.
     """
@@ -146,19 +146,26 @@ def swing(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, h_val: st
         traj = truth.integrate(rhs(params), [s0, c0, 0, y0, 0], dps)
         T0 = free_swing_time(a, params)
         T = truth.event(traj, lambda y, t: y[2], T0, width=T0 / 8)
+        t_low = truth.event(traj, lambda y, t: y[0], T0 / 2, width=T0 / 8)
         s, c, _, _, _ = traj(T)
-        return T, mp.atan2(s, c), y0, T0
+        return T, mp.atan2(s, c), y0, T0, t_low
 
 
 def delta_measured(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, **kw):
-    """(T − T0)/T0 of the model (the measured relative lengthening of the swing)."""
-    T, _, _, T0 = swing(alpha_val, K_val, M_val, dps, **kw)
-    return T / T0 - 1
+    """(T − T0)/T0 of the model (the measured relative lengthening of the swing).
+
+    T is twice the time of the lowest point: on the quasi-static (slow) orbit the swing is
+    symmetric, θ(T − t) = −θ(t) (time reversal and the reflection θ, y1 → −θ, −y1), so
+    both are the same; at the lowest point the O(K³) support vibration left by the start
+    shifts the time by O(K³), at the turning point by O(K^2.5) (θ'' is small there).
+    """
+    _, _, _, T0, t_low = swing(alpha_val, K_val, M_val, dps, **kw)
+    return 2 * t_low / T0 - 1
 
 
 def amplitude_change(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, **kw):
     """|θ(T)| − α: change of the amplitude over one swing."""
-    T, th_end, _, _ = swing(alpha_val, K_val, M_val, dps, **kw)
+    T, th_end, _, _, _ = swing(alpha_val, K_val, M_val, dps, **kw)
     return -th_end - mp.mpf(alpha_val)
 
 
