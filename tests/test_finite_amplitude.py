@@ -49,11 +49,13 @@ def test_isochronism_term_has_no_weight_at_zero_modulus():
 def _forced(a, e, dps):
     with mp.workdps(dps):
         a, e = mp.mpf(a), mp.mpf(e)
-        rhs = lambda t, y: [y[1] * mp.cos(y[0]) * 0 + y[1], -mp.sin(y[0]) + e * (mp.sin(y[0]) + y[1] / 3)]
-        traj = truth.integrate(rhs, [a, 0], dps)
+        # state [sin θ, cos θ, θ']: no trigonometric calls at odefun's working precision
+        rhs = lambda t, y: [y[1] * y[2], -y[0] * y[2], -y[0] + e * (y[0] + y[2] / 3)]
+        traj = truth.integrate(rhs, [mp.sin(a), mp.cos(a), 0], dps)
         T0 = 2 * mp.ellipk(mp.sin(a / 2) ** 2)
-        T = truth.turning_time(traj, T0, width=T0 / 8)
-        return T / T0 - 1, a + traj(T)[0]
+        T = truth.event(traj, lambda y, t: y[2], T0, width=T0 / 8)
+        s, c, _ = traj(T)
+        return T / T0 - 1, a + mp.atan2(s, c)
 
 
 @pytest.mark.slow

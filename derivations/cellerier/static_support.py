@@ -237,12 +237,24 @@ def _delta_finite_check(result, level):
 def _alpha1_static_check(result, level):
     return verify.order_check(
         param="K", values=verify.geometric("5e-3", "4e-2", verify.LEVELS[level]),
-        truth=lambda k, dps: tr.amplitude_change("0.5", mp.nstr(k, 40), "0", dps, h_val=H_TRUTH),
+        truth=lambda k, dps: tr.amplitude_change("1.0", mp.nstr(k, 40), "0", dps, h_val=H_TRUTH),
         derived=lambda k: 0, expected=3, band=0.4,
-        truth_desc="the same pendulum on a spring, α = 0.5: |θ(T)| − α over one swing (mpmath odefun)",
-        params=(("alpha", "0.5"),),
+        truth_desc="the same pendulum on a spring, α = 1 rad: |θ(T)| − α over one swing (mpmath odefun)",
+        params=(("alpha", "1.0"),),
         note=("No O(K) (nor O(K²)) change of amplitude: the quasi-static motion is reversible; the O(K³) "
               "left is the support vibration excited by the truncated (O(K²)) slow-manifold start."))
+
+
+def _example_check(result, level):
+    """The worked example's own pendulum (l = 1, h = 2/3, p = p' = mg): ε = K p, κ = K m g/l = ε/l."""
+    f = sp.lambdify(eps, result.derived, "mpmath")
+    return verify.order_check(
+        param="epsilon", values=verify.geometric("1e-2", "4e-2", verify.LEVELS[level]),
+        truth=lambda e, dps: tr.delta_measured("0.003", mp.nstr(e, 40), "0", dps, h_val="2/3"),
+        derived=lambda e: f(e), printed=lambda e: e / 3, expected=2, band=0.3,
+        truth_desc=("rigid pendulum with l = 1, h = 2/3 (m = g = 1) on a massless spring deflected ε by p = p' = mg, "
+                    "slow-manifold start at α = 0.003, mpmath odefun; δ = T/T0 − 1"),
+        params=(("h/l", "2/3"), ("alpha", "0.003")), note="ε in units of l; residual O(ε²)")
 
 
 def _sin_theta_check(result, level):
@@ -370,7 +382,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(f"{Pm}.example_delta", "δ = ε/3 for p = p', l = 1 m, h = 2/3 m",
              src("en supposant … que la force p soit égale au poids même du pendule, … l = 1, h = 2/3, on trouvera "
                  "δ = (1/3)·ε (p. 10)"), r"\delta", example_derived, deps=(f"{Pm}.delta_practical",),
-             printed=lambda: eps / 3, note="ε in metres (l = 1 m)."),
+             printed=lambda: eps / 3, check=_example_check, note="ε in metres (l = 1 m)."),
         Spec(f"{Pm}.g_error", "Relative error on g: 2δ = (2/3)ε",
              src("l'erreur relative qui résulterait de celle-là pour la valeur de g serait 3 c (p. 10)"),
              r"\Delta g/g", g_error_derived, deps=(f"{Pm}.example_delta",), printed=lambda: 2 * eps / 3,

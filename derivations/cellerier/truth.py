@@ -136,7 +136,8 @@ def swing(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, h_val: st
     Returns mpf values; l = C/(m h) fixes C.
     """
     with mp.workdps(dps):
-        params = {"m": mp.mpf(m_val), "h": mp.mpf(h_val), "g": mp.mpf(g_val), "K": mp.mpf(K_val),
+        params = {"m": mp.mpf(m_val), "h": mp.mpf(sp.Rational(h_val).p) / sp.Rational(h_val).q,
+                  "g": mp.mpf(g_val), "K": mp.mpf(K_val),
                   "M": mp.mpf(M_val)}
         params["C"] = mp.mpf(l_val) * params["m"] * params["h"]
         _, ic = _numeric()
