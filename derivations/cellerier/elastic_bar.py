@@ -169,5 +169,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(f"{Pm}.lumped_dynamic", "Dynamic correction for a support of mass M (not in the memoir)",
              src("on peut seulement conjecturer qu'il en est à peu près ainsi quand Q varie très-lentement (p. 6)"),
              r"\delta_M/\delta_0-1", lumped_derived, check=_lumped_check,
+             kernel=KernelSpec((KernelArg("K", 1e-9, 1e-3), KernelArg("M", 0.1, 1000.0), KernelArg("g", 9.0, 10.0, log=False),
+                                KernelArg("l", 0.1, 5.0)), doc="relative dynamic correction K M g/l of a lumped support"),
              note="Lumped analogue of the bar's (ρc/n)²/3: relative correction KMρ² with ρ² = g/l."),
     )
