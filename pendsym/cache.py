@@ -31,22 +31,29 @@ def directory() -> Path | None:
     return Path(env) if env else Path.cwd() / ".cache" / "pendsym"
 
 
+# Parts of the engine that cannot change a check's evidence (they only emit files).
+EMITTERS = ("emit", "templates", "cli.py", "bench.py", "derive.py")
+
+
 @lru_cache(maxsize=None)
-def code_hash(package: str) -> str:
-    """sha256 of the source files of a package (sorted by path)."""
+def code_hash(package: str, exclude: tuple[str, ...] = ()) -> str:
+    """sha256 of the source files of a package (sorted by path), less the excluded parts."""
     mod = importlib.import_module(package)
     root = Path(next(iter(mod.__path__)))
     h = hashlib.sha256()
     for f in sorted(root.rglob("*")):
+        rel = f.relative_to(root).parts
+        if rel and rel[0] in exclude:
+            continue
         if f.suffix in (".py", ".j2") and "__pycache__" not in f.parts:
             h.update(str(f.relative_to(root)).encode())
             h.update(f.read_bytes())
     return h.hexdigest()
 
 
-def key(*parts: str, packages: tuple[str, ...] = ("pendsym",)) -> str:
+def key(*parts: str, packages: tuple[str, ...] = ("pendsym",), exclude: tuple[str, ...] = ()) -> str:
     h = hashlib.sha256()
-    for p in (sympy.__version__, mpmath.__version__, *(code_hash(pk) for pk in packages), *parts):
+    for p in (sympy.__version__, mpmath.__version__, *(code_hash(pk, exclude) for pk in packages), *parts):
         h.update(p.encode())
         h.update(b"\0")
     return h.hexdigest()

@@ -48,7 +48,7 @@ def check(result: Result, level: str = "full") -> Evidence | None:
         with mp.workdps(40):
             return result.spec.check(result, level)
     key = cache.key("check", result.id, level, sp.srepr(result.derived), sp.srepr(result.printed),
-                    packages=("pendsym", registry.MEMOIRS[result.spec.memoir]))
+                    packages=("pendsym", registry.MEMOIRS[result.spec.memoir]), exclude=cache.EMITTERS)
     return cache.memo(key, run)
 
 
@@ -124,3 +124,29 @@ def write(path: Path, text: str) -> None:
 def build(ids: Sequence[str] | None = None) -> dict[str, Result]:
     """Stage 1: the Results asked for and their dependency closure."""
     return registry.build(ids)
+
+
+def through(*downstream: str):
+    """A check for an intermediate step: the independent checks of the Results it feeds.
+
+    The step's derived form is computed, never typed, and flows into each
+    downstream Result; an error in it would show in their fitted orders.
+    The evidence says so (kind "chain") rather than pretending to a check of
+    its own.
+    """
+    def check_step(result: Result, level: str) -> Evidence:
+        built = registry.build(list(downstream))
+        evs = [check(built[d], level) for d in downstream]
+        first = evs[0]
+        return Evidence(kind="chain", passed=all(e is not None and e.passed for e in evs),
+                        truth="through " + ", ".join(downstream) + ": " + "; ".join(e.truth for e in evs if e),
+                        max_residual=first.max_residual, order=first.order, expected_order=first.expected_order,
+                        band=first.band, param=first.param, params=first.params, series=first.series,
+                        note="verified through the Results it feeds")
+    return check_step
+
+
+def definition_check(result: Result, level: str) -> Evidence:
+    """A definition: its derived form must equal the definition as stated (exactly)."""
+    same = result.printed is not None and verify.exactly_equal(result.printed_value, result.derived_value)
+    return Evidence(kind="definition", passed=bool(same), truth="a definition, compared exactly with the text")

@@ -12,6 +12,7 @@ import mpmath as mp
 import sympy as sp
 
 from pendsym import verify
+from pendsym import pipeline
 from pendsym.result import KernelArg, KernelSpec, Reading, Spec
 from . import truth as tr
 from .equation import MEMOIR, src
@@ -164,7 +165,7 @@ def specs() -> tuple[Spec, ...]:
              kernel=KernelSpec((KernelArg("x", 1e-8, 0.5),), doc="relative dynamic correction, x = ρc/n"),
              note="Not printed: the text only says the correction vanishes with ρc/n; it is (ρc/n)²/3."),
         Spec(f"{Pm}.rho_cn", "ρc/n = πc/(nT)", src("ρ = π/T, ρc/n = πc/(nT) (p. 8)"), r"\rho c/n", rho_cn_derived,
-             printed=lambda: sp.pi * c / (n * T),
+             printed=lambda: sp.pi * c / (n * T), definition=True, check=pipeline.definition_check,
              readings=(Reading("βc/n", "ρc/n"),)),
         Spec(f"{Pm}.lumped_dynamic", "Dynamic correction for a support of mass M (not in the memoir)",
              src("on peut seulement conjecturer qu'il en est à peu près ainsi quand Q varie très-lentement (p. 6)"),

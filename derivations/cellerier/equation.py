@@ -16,6 +16,7 @@ import mpmath as mp
 import sympy as sp
 
 from pendsym import verify
+from pendsym import pipeline
 from pendsym.result import Reading, Source, Spec
 from .symbols import C, P, Q, g, h, l, m, mu_p, theta, thetad, thetadd, x1dd, x1s, y1dd, y1s
 
@@ -213,5 +214,6 @@ def specs() -> tuple[Spec, ...]:
         Spec(f"{P_}.equation_l", "θ'' = −(g/l) sin θ + μ'/(mhl), l = C/(mh)",
              src("En posant l = C/(mh), on pourra l'écrire: d²θ/dt² = −(g/t) sin θ + μ'/(mht)  (p. 3)"),
              r"\theta''", equation_l_derived, deps=(f"{P_}.equation",), printed=equation_l_printed, defs=MU_DEF,
+             check=pipeline.through(f"{P_}.equation"),
              readings=(Reading("g/t, μ'/(mht)", "g/l, μ'/(mhl): OCR reads l as t"),)),
     )

@@ -7,7 +7,7 @@ import mpmath as mp
 import sympy as sp
 
 from pendsym import truth, verify
-from pendsym.result import KernelArg, KernelSpec, Reading, Spec
+from pendsym.result import Evidence, KernelArg, KernelSpec, Reading, Spec
 from .equation import MEMOIR, X1, Y1, _symbolize, pressures_exact, src, th, t
 from .symbols import F, Fp, P, Q, alpha, g, h, l, m, theta, thetad, thetadd, x1dd, y1dd
 
@@ -90,10 +90,12 @@ def _newton_PQ(tr_, s, hh=1, mm=1):
 
 def _F_check(result, level):
     """F (or F') against the projection of Newton's P, Q along O'G' (or across) on the integrated swing."""
-    pairs = []
+    pairs, ppairs = [], []
     with mp.workdps(30):
         traj = _free_traj("0.8", 30)
         f = sp.lambdify((theta, thetad, thetadd, m, h), result.derived, "mpmath")
+        fp = (sp.lambdify((theta, thetad, thetadd, m, h), result.printed_value, "mpmath")
+              if result.printed is not None else None)
         for s in (mp.mpf("0.5"), mp.mpf("1.9")):
             th_, w_ = traj(s)
             P_, Q_ = _newton_PQ(traj, s)
@@ -101,9 +103,16 @@ def _F_check(result, level):
             across = -P_ * mp.sin(th_) + Q_ * mp.cos(th_)
             want = along if result.id.endswith(".F") else across
             pairs.append((f"t={s}", f(th_, w_, -mp.sin(th_), 1, 1), want))
-    return verify.value_check(truth_desc="θ'' = −sin θ, α = 0.8 (mpmath odefun); P, Q = −m(h cos θ)'', −m(h sin θ)'' "
-                              "by numerical differentiation; F = projection on O'G', F' across", pairs=pairs,
-                              tol=mp.mpf("1e-10"), kind="value", params=(("alpha", "0.8"),))
+            if fp is not None:
+                ppairs.append((f"t={s}", fp(th_, w_, -mp.sin(th_), 1, 1), want))
+    ev = verify.value_check(truth_desc="θ'' = −sin θ, α = 0.8 (mpmath odefun); P, Q = −m(h cos θ)'', −m(h sin θ)'' "
+                            "by numerical differentiation; F = projection on O'G', F' across", pairs=pairs,
+                            tol=mp.mpf("1e-10"), kind="value", params=(("alpha", "0.8"),))
+    if not ppairs:
+        return ev
+    pev = verify.value_check(truth_desc="", pairs=ppairs, tol=mp.mpf("1e-10"))
+    return Evidence(**{**ev.__dict__, "printed_agrees": pev.passed,
+                       "note": f"printed form: largest difference {pev.max_residual:.3g} from Newton's projection"})
 
 
 def _max_on_traj(alpha_val: str, fn, dps: int):

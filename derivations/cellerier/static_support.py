@@ -13,6 +13,7 @@ import sympy as sp
 from pendsym import finite_amplitude as fa
 from pendsym import truth as ptruth
 from pendsym import verify
+from pendsym import pipeline
 from pendsym.result import KernelArg, KernelSpec, Reading, Spec
 from . import truth as tr
 from .equation import MEMOIR, src
@@ -331,8 +332,9 @@ def specs() -> tuple[Spec, ...]:
         Spec(f"{Pm}.delta_support", "δ for the motion of the knife edge",
              src("δ = 1/(2πg) ∫_0^π [sin θ d²x1/dt² − cos θ d²y1/dt²] cos φ/sin ½α dφ (p. 4)"), r"\delta",
              delta_support_derived, deps=(f"{Pm}.delta_general", f"{Pm}.mu_prime"), printed=delta_support_printed,
-             defs=THETA_PHI, instances=XY_INSTANCES,
-             note="x1'', y1'' along the swing are arbitrary functions of φ (compared on test functions)."),
+             defs=THETA_PHI, instances=XY_INSTANCES, check=pipeline.through(f"{Pm}.delta_general", f"{Pm}.mu_prime"),
+             note="x1'', y1'' along the swing are arbitrary functions of φ (compared on test functions). "
+                  "Verified through its two ingredients; no integration with a prescribed support motion yet."),
         Spec(f"{Pm}.Q_static", "Q on the free swing", src("La valeur exacte de Q est: Q = (2gmh/l)(cos θ − cos α) "
                                                           "sin θ + (mgh/l) sin θ cos θ (p. 5)"),
              "Q", Q_static_derived, deps=(f"{Pm}.Q_reduced",), printed=Q_static_printed, check=_Q_static_check),
@@ -353,10 +355,12 @@ def specs() -> tuple[Spec, ...]:
         Spec(f"{Pm}.y1dd", "y1'' to the leading order", src("d²y1/dt² = −(2Kmg²h/t²) sin ½α cos φ (p. 6)"),
              r"y_1''", y1dd_derived, deps=(f"{Pm}.Q_leading", f"{Pm}.sin_theta"), printed=y1dd_printed,
              readings=(Reading("t²", "l²: OCR reads l as t"), Reading("g_1 = KQ", "y1 = KQ")),
+             check=pipeline.through(f"{Pm}.delta_static"),
              note="y1 = KQ (the horizontal deflection; the text's x1 is vertical and neglected)."),
         Spec(f"{Pm}.delta_static_integral", "δ as an integral for the static support",
              src("δ = (Kmhg/(πl²)) ∫_0^π cos²φ dφ (p. 6)"), r"\delta", delta_static_integral_derived,
              deps=(f"{Pm}.delta_general", f"{Pm}.mu_prime", f"{Pm}.y1dd"), printed=delta_static_integral_printed,
+             check=pipeline.through(f"{Pm}.delta_static"),
              note="cos θ → 1 as the text does ('en remplaçant de même cos θ par 1')."),
         Spec(f"{Pm}.delta_static", "δ = Kmgh/(2l²)", src("δ = … = Kmgh/(2l²) (p. 6)"), r"\delta",
              delta_static_derived, deps=(f"{Pm}.delta_static_integral",), printed=lambda: K * m * g * h / (2 * l**2),
@@ -378,7 +382,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(f"{Pm}.delta_practical", "δ = ½ (ε/l)(h/l)(p'/p)",
              src("on aura alors K = ε/p; … δ = ½ · ε/l · h/l · p'/p (p. 10)"), r"\delta", practical_derived,
              deps=(f"{Pm}.delta_static",), printed=lambda: eps / l * h / l * pp / p / 2, kernel=kern_pr,
-             readings=(Reading("K = ı/p", "K = ε/p"),)),
+             readings=(Reading("K = ı/p", "K = ε/p"),), check=pipeline.through(f"{Pm}.example_delta")),
         Spec(f"{Pm}.example_delta", "δ = ε/3 for p = p', l = 1 m, h = 2/3 m",
              src("en supposant … que la force p soit égale au poids même du pendule, … l = 1, h = 2/3, on trouvera "
                  "δ = (1/3)·ε (p. 10)"), r"\delta", example_derived, deps=(f"{Pm}.delta_practical",),

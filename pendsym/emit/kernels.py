@@ -11,6 +11,7 @@ from __future__ import annotations
 import ctypes
 import math
 import random
+import re
 import subprocess
 import tempfile
 from dataclasses import dataclass
@@ -74,6 +75,8 @@ REWRITES: tuple[tuple[str, Callable[[sp.Expr], sp.Expr]], ...] = (
     ("sin-basis", _sin_basis),
     ("cos-basis", _cos_basis),
     ("horner", lambda e: sp.horner(sp.expand(e)) if e.is_polynomial() else e),
+    # 1 − cos x cancels for small x: cos x = 1 − 2 sin²(x/2)
+    ("half-angle", lambda e: sp.factor(sp.expand(e.replace(sp.cos, lambda x: 1 - 2 * sp.sin(x / 2) ** 2)))),
 )
 
 # ----------------------------------------------------------------- printers
@@ -108,19 +111,31 @@ def _body(expr: sp.Expr, printer, decl: str, end: str) -> tuple[list[str], str]:
     return lines, printer.doprint(red)
 
 
+def identifier(name: str) -> str:
+    """A C and Python identifier for a symbol's name (p' → p_prime)."""
+    out = re.sub(r"\W", "_", name.replace("'", "_prime"))
+    return out if out[:1].isalpha() else "a_" + out
+
+
+def _printable(k: "Kernel") -> sp.Expr:
+    """The kernel's expression with every argument renamed to its identifier."""
+    by = {x.name: x for x in k.expr.free_symbols}
+    return k.expr.xreplace({by[a.name]: sp.Symbol(identifier(a.name), real=True) for a in k.args if a.name in by})
+
+
 def c_function(k: "Kernel") -> tuple[str, str]:
     """(prototype, definition) of a kernel in C99."""
     pr = KernelC()
-    args = ", ".join(f"double {a.name}" for a in k.args)
+    args = ", ".join(f"double {identifier(a.name)}" for a in k.args)
     proto = f"double {k.name}({args})"
-    lines, ret = _body(k.expr, pr, "const double ", ";")
+    lines, ret = _body(_printable(k), pr, "const double ", ";")
     return proto, proto + "\n{\n" + "".join(f"    {ln}\n" for ln in lines) + f"    return {ret};\n}}\n"
 
 
 def py_function(k: "Kernel") -> str:
     pr = KernelPy(settings={"fully_qualified_modules": True})
-    lines, ret = _body(k.expr, pr, "", "")
-    args = ", ".join(a.name for a in k.args)
+    lines, ret = _body(_printable(k), pr, "", "")
+    args = ", ".join(identifier(a.name) for a in k.args)
     doc = k.docstring().replace("\n", "\n    ")
     body = "".join(f"    {ln}\n" for ln in lines)
     return f'def {k.name}({args}):\n    """{doc}\n    """\n{body}    return {ret}\n'

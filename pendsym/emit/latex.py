@@ -57,7 +57,7 @@ def num(x) -> str:
 
 def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel], bench: str | None,
            sections: Sequence[tuple[str, str]]) -> str:
-    """The report's LaTeX text.  sections: (paragraph prefix such as "n°2", heading)."""
+    """The report's LaTeX text.  sections: (paragraph range such as "18-20" or a tuple of ids, heading)."""
     items = []
     for rec in records:
         r = rec.result
@@ -80,10 +80,14 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
                 "plot": bool(ev.series) and all(v > 0 for _, v in ev.series),
             },
         })
-    groups = []
-    for prefix, heading in sections:
-        members = [it for it in items if _para_key(it["para"]) in _range(prefix)]
+    groups, placed = [], set()
+    for selector, heading in sections:
+        members = [it for it in items if _selected(it, selector) and it["id"] not in placed]
+        placed |= {it["id"] for it in members}
         groups.append({"heading": tex_text(heading), "items": members})
+    rest = [it for it in items if it["id"] not in placed]
+    if rest:
+        groups.append({"heading": "Other results", "items": rest})
     disc = [it for it in items if it["status"] == "discrepancy"]
     ks = [{"name": tex_text(k.name), "rule": k.rule, "id": k.result_id,
            "py": num(k.py_accuracy.max_ulp) if k.py_accuracy else "--",
@@ -94,6 +98,13 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
     return render("report.tex.j2", memoir=memoir, title=tex_text(title), groups=groups, discrepancies=disc,
                   kernels=ks, bench=bench, counts=counts, total=len(items),
                   verified=sum(1 for it in items if it["verified"]))
+
+
+def _selected(item: dict, selector) -> bool:
+    """A section takes a paragraph range such as "18-20", or a tuple of result ids."""
+    if isinstance(selector, str):
+        return _para_key(item["para"]) in _range(selector)
+    return item["id"] in selector
 
 
 def _para_key(para: str) -> int:
