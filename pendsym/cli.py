@@ -12,8 +12,10 @@ from pathlib import Path
 
 import sympy as sp
 
+import mpmath as mp
+
 from . import derive as drv
-from . import pipeline, registry
+from . import pipeline, registry, scene
 
 
 class UsageError(Exception):
@@ -36,6 +38,9 @@ def _parser() -> Parser:
     dv.add_argument("ids", nargs="*")
     dv.add_argument("--out", default="generated")
     dv.add_argument("--level", choices=("quick", "full"), default="full")
+    sc = sub.add_parser("scene", help="compute one concrete configuration from a scene file (TOML)")
+    sc.add_argument("file")
+    sc.add_argument("--json", action="store_true")
     ck = sub.add_parser("check", help="run one Result's independent verification and print the evidence")
     ck.add_argument("id")
     ck.add_argument("--level", choices=("quick", "full"), default="full")
@@ -110,17 +115,30 @@ def cmd_check(args) -> int:
     return 0 if ev.passed else 1
 
 
+def cmd_scene(args) -> int:
+    sc = scene.load(args.file)
+    rows, n_built = scene.evaluate(sc)
+    if args.json:
+        print(json.dumps({"scene": sc.name, "results_built": n_built,
+                          "values": [{"id": i, "title": t, "value": float(v)} for i, t, v in rows]}, indent=1))
+        return 0
+    print(f"{sc.name}  ({n_built} results built: the closure of {len(sc.results)})")
+    for rid, title, val in rows:
+        print(f"  {rid:<36} {mp.nstr(val, 8):>16}   {title}")
+    return 0
+
+
 def main(argv=None) -> int:
     try:
         args = _parser().parse_args(argv)
-        return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check}[args.cmd](args)
+        return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check, "scene": cmd_scene}[args.cmd](args)
     except UsageError as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
     except registry.UnknownResult as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
-    except drv.DomainError as exc:
+    except (drv.DomainError, scene.SceneError) as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
 

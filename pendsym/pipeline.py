@@ -78,6 +78,7 @@ def _evidence_json(ev: Evidence | None) -> dict | None:
     d["params"] = dict(ev.params)
     d["series"] = [list(x) for x in ev.series]
     d["printed_series"] = [list(x) for x in ev.printed_series]
+    d["values"] = [list(x) for x in ev.values]
     d["band"] = list(ev.band) if ev.band else None
     return d
 

@@ -78,6 +78,7 @@ class Evidence:
     printed_order: float | None = None
     printed_agrees: bool | None = None
     confirm_digits: float | None = None  # agreement of truth at two precisions
+    values: tuple[tuple[float, float, float], ...] = ()     # (parameter, truth, derived formula)
     note: str = ""
 
 
@@ -103,6 +104,7 @@ class Spec:
     kernel: KernelSpec | None = None
     note: str = ""
     definition: bool = False   # a pure definition: listed, not a claim
+    show_values: bool = False  # the report also plots truth and formula against the parameter
     defs: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()  # the memoir's definitions (T = π/k …)
     # substitutions of undefined functions (φ → a test function) under which
     # printed and derived are compared when they hold an arbitrary function

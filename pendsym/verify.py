@@ -160,6 +160,7 @@ def order_check(*, param: str, values: Sequence, truth: Callable, derived: Calla
         printed_order=None if pslope is None else rounded(pslope),
         printed_agrees=printed_agrees,
         confirm_digits=rounded(truth_digits(truths[0], t_hi)),
+        values=tuple((rounded(p), rounded(t), rounded(t - r)) for p, t, r in zip(values, truths, res)),
         note=note + ("" if resolved else " | truth not resolved at two precisions"),
     )
 

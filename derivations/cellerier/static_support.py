@@ -364,7 +364,7 @@ def specs() -> tuple[Spec, ...]:
              note="cos θ → 1 as the text does ('en remplaçant de même cos θ par 1')."),
         Spec(f"{Pm}.delta_static", "δ = Kmgh/(2l²)", src("δ = … = Kmgh/(2l²) (p. 6)"), r"\delta",
              delta_static_derived, deps=(f"{Pm}.delta_static_integral",), printed=lambda: K * m * g * h / (2 * l**2),
-             check=_delta_static_check, kernel=kern),
+             check=_delta_static_check, kernel=kern, show_values=True),
         Spec(f"{Pm}.delta_static_finite", "δ at finite amplitude, first order in K (not in the memoir)",
              src("les termes négligés … sont de l'ordre de θ² (p. 7)"), r"\delta", delta_static_finite_derived,
              check=_delta_finite_check,

@@ -78,6 +78,8 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
                 "series": [(num(p), num(v)) for p, v in ev.series],
                 "printed_series": [(num(p), num(v)) for p, v in ev.printed_series if v > 0],
                 "plot": bool(ev.series) and all(v > 0 for _, v in ev.series),
+                "values": [(num(p), num(tv), num(fv)) for p, tv, fv in ev.values]
+                if r.spec.show_values and ev.values and all(tv > 0 and fv > 0 for _, tv, fv in ev.values) else [],
             },
         })
     groups, placed = [], set()
