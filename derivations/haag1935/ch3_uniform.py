@@ -17,6 +17,7 @@ import functools
 
 import mpmath as mp
 import sympy as sp
+from sympy.functions.elementary.hyperbolic import HyperbolicFunction
 
 from pendsym import blade as B
 from pendsym import verify
@@ -54,14 +55,29 @@ def in_tanh(expr: sp.Expr) -> sp.Expr:
 
     e^{u} = (1 + t)/(1 − t) with t = th(u/2): sh u, ch u, th u are rational in t.
     """
-    ex = sp.expand(expr.rewrite(sp.exp))
+    ex = hyp_to_exp(expr)
     ex = ex.replace(lambda x: isinstance(x, sp.exp) and sp.simplify(x.args[0] / u).is_number,
                     lambda x: _Q ** (2 * sp.simplify(x.args[0] / u)))
     if ex.has(u) and any(a.has(u) for a in ex.atoms(sp.exp)):
-        raise ValueError("exponentials not proportional to u")
-    ex = sp.cancel(sp.together(ex))
-    ex = sp.cancel(ex.subs(_Q, sp.sqrt((1 + _T) / (1 - _T))))
-    return ex
+        raise ValueError(f"exponentials not proportional to u: {[x for x in ex.atoms(sp.exp) if x.has(u)]}")
+    num, den = sp.fraction(sp.cancel(sp.together(ex)))
+    P = sp.Symbol("P_q", positive=True)           # e^u = Q²
+    parts = []
+    for part in (num, den):
+        try:
+            poly = sp.Poly(part, _Q)
+        except sp.PolynomialError:
+            poly = None
+        if poly is None or any(m[0] % 2 for m in poly.monoms()):
+            return sp.cancel(sp.together(ex).subs(_Q, sp.sqrt((1 + _T) / (1 - _T))))
+        parts.append(sum(cf * P ** (m[0] // 2) for m, cf in poly.terms()))
+    sub = (1 + _T) / (1 - _T)
+    return sp.cancel(sp.together(parts[0].subs(P, sub)) / sp.together(parts[1].subs(P, sub)))
+
+
+def hyp_to_exp(expr: sp.Expr) -> sp.Expr:
+    """Hyperbolic functions rewritten as exponentials (powers are left alone)."""
+    return expr.replace(lambda x: isinstance(x, HyperbolicFunction), lambda x: x.rewrite(sp.exp))
 
 
 def from_tanh(expr: sp.Expr) -> sp.Expr:
@@ -195,7 +211,7 @@ def integrate_exp_poly(f: sp.Expr, upper: sp.Expr) -> sp.Expr:
 
 def _integrate_blade(expr_s, upper=None):
     """∫_0^{upper or λ} expr ds for an expression in e^{±us/λ} and s (substitution s = λt/u)."""
-    f = expr_s.rewrite(sp.exp).subs(s, lam * _t / u)
+    f = hyp_to_exp(expr_s).subs(s, lam * _t / u)
     up = u if upper is None else sp.expand(u * upper / lam)
     return integrate_exp_poly(f, up) * lam / u
 
@@ -290,8 +306,8 @@ def Sp_top(_deps):
         ev, od = sp.Poly(Sl[2 * q], k), sp.Poly(Sl[2 * q + 1], k)
         if ev.degree() != q or od.degree() != q:
             raise ValueError("degree in k is not q")
-        ratios.append((ev.LC() / (-1) ** q, od.LC() / (-1) ** q))
-    return sp.Tuple(*[sp.Tuple(*r) for r in ratios])
+        ratios += [ev.LC() / (-1) ** q, od.LC() / (-1) ** q]
+    return sp.Tuple(*ratios)
 
 
 def Gamma_top(deps):
@@ -343,7 +359,7 @@ def F01(deps):
 
 
 def _F_step(rec, m, prev1, prev2):
-    return sp.expand(rec.subs({n: m, Fn(m - 1): prev1, Fn(m - 2): prev2}) / m)
+    return sp.expand(rec.subs(n, m).subs({Fn(m - 1): prev1, Fn(m - 2): prev2}) / m)
 
 
 def _poly_K_tanh(expr):
@@ -408,19 +424,18 @@ def c_derived(deps):
 
 def _poly_theta(expr):
     """expr as A + B·θ/Y (or in K, b, a) with coefficients written in tanh."""
-    ex = sp.expand(sp.simplify(expr))
-    return sp.simplify(ex.rewrite(sp.tanh))
+    return from_tanh(in_tanh(expr))
 
 
 def c_principal(deps):
     """c for the principal oscillation, Y = Kθ (65)."""
-    return sp.simplify(deps[rid(172, "c")].derived.subs(theta, Y / K))
+    return from_tanh(in_tanh(deps[rid(172, "c")].derived.subs(theta, Y / K)))
 
 
 def c_static(deps):
     """c for the static deviation: θ/Y = (b − v_λ)/(a − a1) (67), a1 = −w_λ (41), (159)."""
     vlv, wlv = deps[rid(159, "vl")].derived, deps[rid(159, "wl")].derived
-    return sp.simplify(deps[rid(172, "c")].derived.subs(theta, Y * (b - vlv) / (a + wlv)))
+    return from_tanh(in_tanh(deps[rid(172, "c")].derived.subs(theta, Y * (b - vlv) / (a + wlv))))
 
 
 def static_ends(sign):
@@ -525,7 +540,8 @@ def blade_solution(uv: str, dps: int = DPS) -> B.BladeSolution:
 def evaluate(expr: sp.Expr, pt: dict, subs: dict | None = None):
     """expr at the point pt (symbol name → value), at the precision in force."""
     if subs:
-        expr = expr.subs(subs)
+        first = {x: v for x, v in subs.items() if isinstance(x, sp.Symbol)}
+        expr = expr.subs(first).subs({x: v for x, v in subs.items() if x not in first})
     syms = sorted(expr.free_symbols, key=lambda x: x.name)
     f = verify.lambdify_mp(expr, syms)
     return mp.mpf(f(*[mp.mpf(pt[x.name]) if not isinstance(pt[x.name], int) else pt[x.name] for x in syms]))
@@ -633,28 +649,34 @@ def _Gamma_check(m):
 
 
 def _Gamma_integral_check(result, level):
+    """The integral of the footnote by mpmath quad against Γ_n from G_n by quadrature on the shot blade."""
     pairs = []
     for pt in grid(level)[:2]:
         sol = blade_solution(pt["_u"])
         for m in (2, 3, 5):
             with mp.workdps(40):
                 expr = result.derived_value.subs(n, m)
-                f = expr.subs({u: sp.Float(pt["u"], 45), K: sp.Float(pt["K"], 45)})
-                val = mp.mpf(sp.N(f, 40))
-                pairs.append((f"n={m}", val, _Gam_blade(sol, pt, m)))
-    return verify.value_check(truth_desc=f"Γ_n from G_n by quadrature of (79) on the {BLADE}; the integral by SymPy N",
+                integ = next(iter(expr.atoms(sp.Integral)))
+                yv = integ.limits[0][0]
+                f = verify.lambdify_mp(integ.function, (yv, u, K))
+                uv, Kv = mp.mpf(pt["u"]), mp.mpf(pt["K"])
+                I = mp.quad(lambda y: f(y, uv, Kv), [-uv / 2, 0, uv / 2])
+                rest = verify.lambdify_mp(expr.subs(integ, sp.Symbol("I_n")), (sp.Symbol("I_n"), u, K))
+                pairs.append((f"n={m}", rest(I, uv, Kv), _Gam_blade(sol, pt, m)))
+    return verify.value_check(truth_desc=f"Γ_n from G_n by quadrature of (79) on the {BLADE}; the integral by mpmath quad",
                               pairs=pairs, tol=TOL)
 
 
 def _Sp_check(result, level):
     holds = sp.simplify(result.derived) == 0
     pairs = []
-    for Kv in ("0.3", "-1.7", "2.9"):
-        Kv = mp.mpf(Kv)
-        kv = Kv * (1 - Kv)
-        S_ = lambda q: Kv**q + (1 - Kv) ** q
-        for q in (2, 5, 9):
-            pairs.append((f"K={Kv},p={q}", S_(q), S_(q - 1) - kv * S_(q - 2)))
+    with mp.workdps(40):
+        for Kv in ("0.3", "-1.7", "2.9"):
+            Kv = mp.mpf(Kv)
+            kv = Kv * (1 - Kv)
+            S_ = lambda q: Kv**q + (1 - Kv) ** q
+            for q in (2, 5, 9):
+                pairs.append((f"K={Kv},p={q}", S_(q), S_(q - 1) - kv * S_(q - 2)))
     return verify.combine(verify.proof(statement="S_p − S_{p−1} + kS_{p−2} = 0 for symbolic p", holds=holds,
                                        truth_desc="symbolic proof"),
                           verify.value_check(truth_desc="direct powers K^p + (1−K)^p", pairs=pairs, tol=TOL))
@@ -668,7 +690,7 @@ def _Sp_top_check(result, level):
         for j, m in ((0, 2 * q), (1, 2 * q + 1)):
             Sx = sp.expand(((1 + r) / 2) ** m + ((1 - r) / 2) ** m)
             pol = sp.Poly(Sx, k)
-            ok &= pol.degree() == q and sp.simplify(pol.LC() / (-1) ** q - result.derived[q - 1][j]) == 0
+            ok &= pol.degree() == q and sp.simplify(pol.LC() / (-1) ** q - result.derived[2 * (q - 1) + j]) == 0
     return verify.proof(statement="leading coefficients of S_{2q}, S_{2q+1} (q = 1…6) from the explicit roots of "
                         "t² − t + k = 0 agree with the recurrence", holds=bool(ok),
                         truth_desc="SymPy expansion of ((1+√(1−4k))/2)^m + ((1−√(1−4k))/2)^m")
@@ -879,7 +901,7 @@ def specs() -> tuple[Spec, ...]:
     c_def = (c, (U + U1 * theta / Y).subs(D, simultaneous=True))
     T_def = (T, E * e**2 * u**2 / (12 * lam**2))
     x0_def = (x0, (K * lam * U / u + lam * U1 / u).subs(D, simultaneous=True))
-    a1_def = (a1, -lam / (u * sp.tanh(u)))
+    a1_def = (a1, -lam / u * D[U2])
     h, mg = sp.Symbol("h", positive=True), sp.Symbol("mg", positive=True)
     n47, n48, n49 = "n°47", "n°48", "n°49"
     fv = lambda key: blade_check(f"{key} shot on the {BLADE}", lambda sol, pt, key=key: getattr(sol, key)(mp.mpf(pt["s"])),
@@ -965,6 +987,8 @@ def specs() -> tuple[Spec, ...]:
         *[Spec(rid(166, f"Gamma{m}"), f"Γ_{m}", src(n48, "166"), rf"\Gamma_{m}", Gamma_n(m),
                deps=(rid(164, "recurrence"), rid(157, "v"), rid(157, "w")), printed=pr, check=_Gamma_check(m),
                defs=D_, kernel=kern(f"Γ_{m}(u, k), polynomial in k = K(1 − K).", U_ARG, k_ARG) if m >= 2 else None,
+               note=("Only the k⁰ term differs from the derivation: derived − printed = (1/(5u))·4(U_1^4 − U_1^3)."
+                     if m == 5 else ""),
                readings=rd)
           for m, pr, rd in (
               (1, lambda: 1 / u, ()),
@@ -975,12 +999,14 @@ def specs() -> tuple[Spec, ...]:
                + k**2 * U**2 / 2 * (3 * U1**2 + (U - 3 * U1) / u), ()),
               (5, lambda: (U2**4 + 4 * U1**3 + sp.Rational(4, 3) * U1**2) / (5 * u)
                - k * U / u * (U**3 - 2 * U * U1**2 + sp.Rational(8, 3) * U1) + k**2 * U**4 / u,
-               (Reading("U_2^4 + 4U_1^3 + 4/3 U_1^2", "as printed (exponents uncertain in the OCR)", certain=False),)))],
+               (Reading("\\frac{1}{5u}(U_2^4 + 4U_1^3 + \\frac43 U_1^2)",
+                        "transcribed as shown, 4U_1^3; the derivation gives 4U_1^4 (an exponent 4 read as 3 "
+                        "by the OCR, or a misprint)", certain=False),)))],
         Spec(rid(166, "Sp_recurrence"), "S_p = S_{p−1} − kS_{p−2} (footnote of (166))", src(n48, "footnote of (166)"),
              r"S_p - S_{p-1} + kS_{p-2}", Sp_recurrence, printed=lambda: sp.S.Zero, check=_Sp_check),
         Spec(rid(166, "Sp_top"), "Leading terms 2(−k)^p of S_{2p}, (2p+1)(−k)^p of S_{2p+1}",
              src(n48, "footnote of (166)"), r"(\mathrm{lc}\,S_{2q}, \mathrm{lc}\,S_{2q+1})_{q=1..6}/(-1)^q", Sp_top,
-             printed=lambda: sp.Tuple(*[sp.Tuple(2, 2 * q + 1) for q in range(1, 7)]), check=_Sp_top_check,
+             printed=lambda: sp.Tuple(*[x for q in range(1, 7) for x in (2, 2 * q + 1)]), check=_Sp_top_check,
              note="Shown for p = 1…6 (the memoir's claim is for every p)."),
         Spec(rid(166, "Gamma_top"), "Leading term U^{2p}(−k)^p/u of Γ_{2p+1}", src(n48, "footnote of (166)"),
              r"(\mathrm{lc}_k\Gamma_3, \mathrm{lc}_k\Gamma_5)", Gamma_top,
@@ -1016,7 +1042,11 @@ def specs() -> tuple[Spec, ...]:
                               + 3 * K**2 / 2 * (U / u * (1 + 3 * U1**2) + 3 * U1**2 * (U * U1 - 1))
                               + 3 * K**3 * U * ((1 + U * U1) / u + U1 * (U * U1 - 2))
                               + 3 * K**4 * (-U / (2 * u) * (7 + U * U1) + 1 + 2 * U * U1 - U**2 * U1**2 / 2)),
-             check=_F_check("F"), defs=D_, kernel=kern("F/λ of (110), (170).", U_ARG, K_ARG)),
+             check=_F_check("F"), defs=D_, kernel=kern("F/λ of (110), (170).", U_ARG, K_ARG),
+             readings=(Reading("\\frac18[\\frac{U_2}{u}(3U_1^2 - 2) - 3U_1^3]",
+                               "transcribed as shown, −3U_1^3; the derivation gives −3U_1^4 (the same exponent "
+                               "slip as in Γ_5 of (166): OCR or misprint)", certain=False),),
+             note="Only the K⁰ term differs from the derivation: derived − printed = −(3/8)(U_1^4 − U_1^3)."),
         # ---------------------------------------------------------------- n°50
         Spec(rid(30, "uniform"), "v_λ² + β1 w_λ for the uniform blade (n°50)", src("n°50", "30"),
              r"v_\lambda^2 + \beta_1 w_\lambda", n50_combination, deps=(rid(159, "vl"), rid(159, "beta1"), rid(159, "wl")),

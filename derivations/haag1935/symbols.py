@@ -45,7 +45,11 @@ Gn = sp.Function("G")        # G_n (79)
 Fn = sp.Function("F")        # F_n (79)
 Sp = sp.Function("S")        # S_p = K^p + (1 − K)^p (footnote of (166))
 
-# Haag's definitions (156), (160): applied to printed and derived forms before comparison
+# Haag's definitions (156), (160): applied to printed and derived forms before comparison.
+# 1/sh u and 1/th u are written through t = th(u/2), 1/sh u = (1 − t²)/(2t), 1/th u = (1 + t²)/(2t)
+# (the same functions, cf. (161)), so that both forms are rational in th(u/2) and u and their
+# exact comparison reduces to a cancellation.
+_t = sp.tanh(u / 2)
 DEFS = ((omega, u / lam), (M, lam**2 / u**2),
-        (U, sp.tanh(u / 2)), (U1, 1 / sp.sinh(u)), (U2, 1 / sp.tanh(u)))
+        (U, _t), (U1, (1 - _t**2) / (2 * _t)), (U2, (1 + _t**2) / (2 * _t)))
 K_OF_k = ((k, K * (1 - K)),)
