@@ -287,3 +287,10 @@ def closed_forms(M: sp.Expr, lam: sp.Expr, s: sp.Symbol = S) -> dict:
     out["beta1"] = lam + out["vl"] - out["v0"]
     out["beta2"] = out["wl"] - out["w0"]
     return types.MappingProxyType(out)
+
+
+def blade_closed_forms(blade: Blade):
+    """The SymPy closed forms of (9)–(10) for a blade of constant M (None when M varies)."""
+    if not blade.constant:
+        return None
+    return closed_forms(blade.M, blade.length, blade.var)

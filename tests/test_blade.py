@@ -172,3 +172,11 @@ def test_inverted_blade_singular_at_buckling(j):
 def test_piecewise_with_branch_on_boundary_rejects_zero_M():
     with pytest.raises(ValueError):
         B.solve(B.Blade(1, sp.Piecewise((0, s < sp.Rational(1, 2)), (1, True))), 30)
+
+
+def test_blade_closed_forms_only_for_constant_M():
+    assert B.blade_closed_forms(B.Blade(1, s + 1)) is None
+    cf = B.blade_closed_forms(B.Blade(2, sp.Rational(1, 4)))
+    sol = B.solve(B.Blade(2, sp.Rational(1, 4)), 30)
+    with mp.workdps(40):
+        assert close(sol.wl, sp.N(cf["wl"], 45))
