@@ -489,6 +489,13 @@ def I_derived(deps):
     return mb * lam**2 / u**2 * _poly_K_tanh(sp.expand(I * u**2 / lam**3))
 
 
+def I_aux_derived(deps):
+    """∫_0^λ (Ks − x_0) x'' ds with x = Kv + w (n°56), integrated from (157)."""
+    x = x_closed(deps)
+    integrand = (K * s - x.subs(s, 0)) * sp.diff(x, s, 2)
+    return _poly_K_tanh(sp.expand(_integrate_blade(sp.expand(integrand)) * u / lam)) * lam / u
+
+
 def s_minus_x_derived(deps):
     """s − x = ½∫_0^s (Kφ1 + φ2)² ds (n°37, θ = 1), integrated from (158)."""
     X = xF_closed(deps)
@@ -1121,6 +1128,10 @@ def specs() -> tuple[Spec, ...]:
              defs=D_, check=blade_check(f"(1/λ)∫y² ds, y of (77) with Y = K, θ = 1, by quadrature on the {BLADE}",
                                         lambda sol, pt: sol.inertia(mp.mpf(pt["K"])), extra={"m'": "1"}),
              kernel=kern("I_λ/m' of (182).", LAM_ARG, U_ARG, K_ARG, unit="m^2")),
+        Spec(rid(182, "aux"), "∫(Ks − x_0)x'' ds (n°56)", src("n°56", "before (182)"),
+             r"\int_0^\lambda (Ks - x_0)x''\,ds", I_aux_derived, deps=(rid(157, "v"), rid(157, "w")),
+             printed=lambda: lam / u * (k * (u - 2 * U) - U1), defs=Dk,
+             check=blade_check(f"mpmath quad of (Ks − x_0)(Kv + w)/M on the {BLADE}", _aux_truth)),
         Spec(rid(183, "s_minus_x"), "s − x along the blade (n°57)", src("n°57", "before (183)"), "s - x",
              s_minus_x_derived, deps=(rid(158, "phi1"), rid(158, "phi2")),
              printed=lambda: (K**2 / 2 * (s * (sp.cosh(u) + 2) / (sp.cosh(u) + 1)
@@ -1142,6 +1153,13 @@ def specs() -> tuple[Spec, ...]:
                                         lambda sol, pt: sol.weight_integral(mp.mpf(pt["K"]))),
              kernel=kern("J of (183).", LAM_ARG, U_ARG, K_ARG, unit="m")),
     )
+
+
+def _aux_truth(sol, pt):
+    Kv = mp.mpf(pt["K"])
+    X0 = Kv * sol.v0 + sol.w0
+    with mp.workdps(sol.wdps):
+        return sol.integrate(lambda x: (Kv * x - X0) * (Kv * sol.v(x) + sol.w(x)) / sol.M_at(x))
 
 
 def _half_int(sol, Kv, sv):
