@@ -84,6 +84,44 @@ def from_tanh(expr: sp.Expr) -> sp.Expr:
     return sp.factor(expr).subs(_T, TANH)
 
 
+def in_hyperbolic_s(expr: sp.Expr) -> sp.Expr:
+    """expr (exponentials of multiples of ωs = us/λ and of u, powers of s) in the basis ch(jωs), sh(jωs),
+    with coefficients rational in th(u/2): the memoir's way of writing functions of s."""
+    Z = sp.Symbol("Z_s", positive=True)
+    w = sp.Symbol("w_s", positive=True)        # ωs
+
+    def split(x):
+        A = sp.expand(x.args[0])
+        al = sp.expand(A.coeff(s) * lam / u)
+        be = sp.expand(A - A.coeff(s) * s)
+        if be.has(s) or not al.is_integer:
+            raise ValueError(f"exponent not linear in ωs: {A}")
+        return Z**al * sp.exp(be)
+    g = hyp_to_exp(expr).replace(lambda x: isinstance(x, sp.exp) and x.has(s), split).subs(s, lam * w / u)
+    num, den = sp.fraction(sp.cancel(sp.together(g)))
+    dp = sp.Poly(den, Z)
+    if len(dp.terms()) != 1:
+        raise ValueError("denominator depends on s")
+    (dz,), dc = dp.terms()[0]
+    coeffs = {}
+    for (jz,), cf in sp.Poly(sp.expand(num), Z).terms():
+        coeffs[jz - dz] = coeffs.get(jz - dz, 0) + cf / dc
+    out = sp.S.Zero
+    for j in sorted({abs(j) for j in coeffs}):
+        cp, cm = coeffs.get(j, 0), coeffs.get(-j, 0)
+        if j == 0:
+            out += _tidy(cp, w)
+            continue
+        out += _tidy(cp + cm, w) * sp.cosh(j * w) + _tidy(cp - cm, w) * sp.sinh(j * w)
+    return out.subs(w, u * s / lam)
+
+
+def _tidy(cf, w):
+    """A coefficient: polynomial in ωs with coefficients rational in th(u/2)."""
+    pol = sp.Poly(sp.expand(cf), w)
+    return sum(from_tanh(in_tanh(c)) * w**m for (m,), c in pol.terms())
+
+
 # ================================================================ n°47: (156)–(161)
 @functools.lru_cache(maxsize=1)
 def uniform_closed() -> dict:
@@ -410,7 +448,7 @@ def shape_derived(deps):
     """ω y with y = Y(s + v − v0) + θ(w − w0) (77), ω = u/λ, (157), (159); x → s."""
     v, w = deps[rid(157, "v")].derived, deps[rid(157, "w")].derived
     y = Y * (s + v - v.subs(s, 0)) + theta * (w - w.subs(s, 0))
-    return sp.expand(sp.simplify(u / lam * y))
+    return in_hyperbolic_s(u / lam * y)
 
 
 def c_derived(deps):
@@ -453,23 +491,23 @@ def fatigue_derived(deps):
     mgv = E * e**3 * sp.Symbol("h") * u**2 / (12 * lam**2)
     I = e**3 * sp.Symbol("h") / 12
     v, w = deps[rid(157, "v")].derived, deps[rid(157, "w")].derived
-    return sp.simplify(mgv * e / (2 * I)) * (Y * v + theta * w)
+    return sp.simplify(mgv * e / (2 * I)) * in_hyperbolic_s(Y * v + theta * w)
 
 
 def fatigue_Gamma(deps):
     """Γ of (176): T'/(√(3ET) Y) with T = mg/(eh), i.e. (2λ/(E e u))·T'/Y."""
-    return sp.simplify(deps[rid(175, "Tprime")].derived * 2 * lam / (E * e * u * Y))
+    return in_hyperbolic_s(deps[rid(175, "Tprime")].derived * 2 * lam / (E * e * u * Y))
 
 
 def fatigue_end(where):
     def derive(deps):
-        return sp.simplify(deps[rid(176, "Gamma_f")].derived.subs(s, where))
+        return from_tanh(in_tanh(deps[rid(176, "Gamma_f")].derived.subs(s, where)))
     return derive
 
 
 def fatigue_principal(deps):
     """T' for the principal oscillation, Y = Kθ (65)."""
-    return sp.simplify(deps[rid(175, "Tprime")].derived.subs(Y, K * theta))
+    return in_hyperbolic_s(deps[rid(175, "Tprime")].derived.subs(Y, K * theta))
 
 
 def bracket_end(where):
@@ -499,7 +537,7 @@ def I_aux_derived(deps):
 def s_minus_x_derived(deps):
     """s − x = ½∫_0^s (Kφ1 + φ2)² ds (n°37, θ = 1), integrated from (158)."""
     X = xF_closed(deps)
-    return sp.expand(_integrate_blade(sp.expand(X**2), upper=s) / 2)
+    return in_hyperbolic_s(_integrate_blade(sp.expand(X**2), upper=s) / 2)
 
 
 def J_derived(deps):
