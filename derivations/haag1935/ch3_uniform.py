@@ -206,7 +206,8 @@ def Gamma_recurrence(deps):
     r = sp.powsimp(sp.expand(sp.expand_power_base(sp.expand(r / scale(n)), force=True)), force=True)
     coeff = sp.factor(r.coeff(Gam(n - 2)))
     rest = sp.factor(sp.expand(r - coeff * Gam(n - 2)))
-    return (coeff.subs(a0, xi0) * Gam(n - 2) + rest.subs({a0: xi0, al: xil}))
+    tidy = lambda x: from_tanh(in_tanh(x))
+    return tidy(coeff.subs(a0, xi0)) * Gam(n - 2) + rest.subs({a0: tidy(xi0), al: tidy(xil)})
 
 
 _t = sp.Symbol("t", positive=True)
@@ -388,7 +389,11 @@ def F_recurrence(deps):
     Fs = sp.Symbol("F_n")
     # ∫ x^{n−2}(x² − 2Kx + C) = F_n − 2K F_{n−1} + C F_{n−2}
     eq = sp.Eq(Fs, K * Fn(n - 1) + (1 ** (n - 1)) * ends - (n - 1) * (Fs - 2 * K * Fn(n - 1) + C * Fn(n - 2)))
-    return sp.expand(n * sp.solve(eq, Fs)[0])
+    rec = sp.expand(n * sp.solve(eq, Fs)[0])
+    parts = [rec.coeff(Fn(n - 1)), rec.coeff(Fn(n - 2))]
+    rest = sp.expand(rec - parts[0] * Fn(n - 1) - parts[1] * Fn(n - 2))
+    tidy = lambda x: sp.factor(sp.collect(sp.expand(from_tanh(in_tanh(x))), n))
+    return tidy(parts[0]) * Fn(n - 1) + tidy(parts[1]) * Fn(n - 2) + tidy(rest)
 
 
 def F01(deps):
