@@ -14,6 +14,7 @@ from .result import Result, Spec
 
 MEMOIRS: Mapping[str, str] = {
     "charbonnier1908": "derivations.charbonnier1908",
+    "haag1935": "derivations.haag1935",
     "cellerier": "derivations.cellerier",
 }
 
