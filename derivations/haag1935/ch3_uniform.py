@@ -635,6 +635,8 @@ def blade_check(desc: str, truth, points=None, subs_fn=None, with_s=False, with_
             note += f"; printed form: max relative residual {pv.max_residual:.3g}"
         ev = verify.value_check(truth_desc=desc + f" (λ = {LAM}, u ∈ {U_VALUES[level]})", pairs=pairs, tol=TOL,
                                 params=(("lambda", str(LAM)),), note=note)
+        if ppairs:
+            ev = Evidence(**{**ev.__dict__, "printed_agrees": pv.passed})
         if digits < 28:
             ev = Evidence(**{**ev.__dict__, "passed": False})
         return ev
