@@ -138,7 +138,7 @@ def main(argv=None) -> int:
     except registry.UnknownResult as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
-    except (drv.DomainError, scene.SceneError) as exc:
+    except scene.SceneError as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
 

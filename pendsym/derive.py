@@ -13,10 +13,6 @@ from .emit import files, kernels as kn, latex
 from .io import write_atomic
 
 
-class DomainError(ValueError):
-    """A parameter outside its domain (reported in one line by the CLI)."""
-
-
 def memoir_meta(memoir: str):
     mod = importlib.import_module(registry.MEMOIRS[memoir])
     return getattr(mod, "TITLE", memoir), getattr(mod, "SECTIONS", ())

@@ -10,7 +10,6 @@ import mpmath as mp
 import sympy as sp
 
 from . import cache, parallel, registry, verify
-from .io import write_atomic
 from .result import Evidence, Result
 
 
@@ -121,13 +120,6 @@ def load_results_json(path: Path) -> dict[str, dict]:
     return {r["id"]: r for r in data["results"]}
 
 
-def write(path: Path, text: str) -> None:
-    write_atomic(path, text)
-
-
-def build(ids: Sequence[str] | None = None) -> dict[str, Result]:
-    """Stage 1: the Results asked for and their dependency closure."""
-    return registry.build(ids)
 
 
 def through(*downstream: str):
