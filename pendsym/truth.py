@@ -57,12 +57,3 @@ def turning_time(traj: Trajectory, guess, width=None) -> mp.mpf:
 def crossing_time(traj: Trajectory, guess, width=None) -> mp.mpf:
     """Time of the zero of θ nearest ``guess`` (the lowest point)."""
     return event(traj, lambda y, t: y[0], guess, width)
-
-
-def digits_between(a, b) -> float:
-    """Number of agreeing significant digits of two high-precision values."""
-    a, b = mp.mpf(a), mp.mpf(b)
-    if a == b:
-        return float(mp.mp.dps)
-    scale = max(abs(a), abs(b))
-    return float(-mp.log10(abs(a - b) / scale)) if scale else float(mp.mp.dps)

@@ -149,7 +149,7 @@ def _swing(ex: Example, p, dps):
         al = mp.nstr(p, 40)
     else:
         vals[ex.check_param.name] = mp.nstr(p, 40)
-    return tr.swing(ex.law, al, K_CHECK, dps, **vals), mp.mpf(al), vals
+    return tr.swing(ex.law, al, K_CHECK, dps, **vals), mp.mpf(al)
 
 
 def _formula_at(ex: Example, expr, p, tv=None):
@@ -171,7 +171,7 @@ def expected_order(ex: Example, q: str) -> int:
 
 def order_check_of(ex: Example, q: str) -> Callable[[object, str], Evidence]:
     def measured(p, dps):
-        sw, al, _ = _swing(ex, p, dps)
+        sw, al = _swing(ex, p, dps)
         kv = mp.mpf(K_CHECK)
         return {"dT": sw.T - mp.pi / kv, "dalpha": sw.amp - al, "dThalf": sw.t_low - mp.pi / (2 * kv),
                 "dthetam": sw.v_low - kv * al}[q]
@@ -194,7 +194,7 @@ def zero_check_of(ex: Example, q: str):
     def check(result, level):
         pairs = []
         for p in verify.geometric(*ex.check_range, 3):
-            sw, al, _ = _swing(ex, p, 30)
+            sw, al = _swing(ex, p, 30)
             pairs.append((f"{ex.check_param.name}={mp.nstr(p, 4)}", _formula_at(ex, result.derived, p), sw.amp - al))
         return verify.value_check(truth_desc=tr.MODEL_TEXT[ex.law] + "; amplitude at the turning point",
                                   pairs=pairs, tol=mp.mpf("1e-24"), kind="value",
@@ -210,7 +210,7 @@ def motion_check_of(ex: Example, which: int):
         kv = mp.mpf(K_CHECK)
 
         def err(p, dps, expr):
-            sw, _, _ = _swing(ex, p, dps)
+            sw, _ = _swing(ex, p, dps)
             return max(abs(sw.traj(s * mp.pi / kv)[which] - _formula_at(ex, expr, p, s * mp.pi / kv)) for s in times)
         vals = verify.geometric(*ex.check_range, verify.LEVELS[level])
         printed = result.printed_value
