@@ -18,7 +18,5 @@ SECTIONS = (
     (_eqs(171, 183), "Shape, fatigue, I_λ and J (171)–(183)"),
 )
 
-# The printed forms cancel as u → 0 (1/u² − U1², u − 2 th(u/2) …): the naive kernels lose
-# up to 1e24 ulp there. Stable forms are the work of issue 3 §5; until then no kernel is
-# emitted for this memoir, rather than one that misses its bound.
-KERNELS_READY = False
+# Whether the uniform blade's kernels are emitted is decided where they are declared.
+KERNELS_READY = ch3_uniform.KERNELS_READY
