@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import functools
 import types
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import mpmath as mp
@@ -121,6 +121,9 @@ class BladeSolution:
     pieces: tuple
     Av: mp.mpf
     Aw: mp.mpf
+    # values of state(s) already computed: quadratures of F_n, G_n, H_n … at different n, K
+    # reuse the same nodes, and each interpolation of the Taylor solution is costly
+    _memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def _piece(self, s):
         s = mp.mpf(s)
@@ -132,9 +135,12 @@ class BladeSolution:
     def state(self, s) -> tuple:
         """(v, v', w, w') at s (continuous across jumps of M)."""
         with mp.workdps(self.wdps):
-            a, b, sol, _ = self._piece(s)
-            y1, d1, y2, d2 = sol(mp.mpf(s))
-            return (self.Av * y1 - y2, self.Av * d1 - d2, self.Aw * y1, self.Aw * d1)
+            s = mp.mpf(s)
+            if s not in self._memo:
+                a, b, sol, _ = self._piece(s)
+                y1, d1, y2, d2 = sol(s)
+                self._memo[s] = (self.Av * y1 - y2, self.Av * d1 - d2, self.Aw * y1, self.Aw * d1)
+            return self._memo[s]
 
     def M_at(self, s):
         with mp.workdps(self.wdps):

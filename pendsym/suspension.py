@@ -32,7 +32,7 @@ n°18: Y = Q/(mg), N = Qb/(mg) − aθ, solved for (β, θ) with the stiffness.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import mpmath as mp
 import sympy as sp
@@ -62,6 +62,8 @@ class Suspension:
     pieces: tuple
     stiffness: mp.matrix
     _ends: tuple            # (c, Y) per unit β and per unit θ
+    # the four fundamental solutions already interpolated at s (quadratures reuse their nodes)
+    _memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def loads(self, beta, theta) -> tuple:
         """(c, Y, N) for the end position (β, θ)."""
@@ -84,7 +86,9 @@ class Suspension:
             s = mp.mpf(s)
             c, Y, N = self.loads(beta, theta)
             _, _, sol, Mf = self._piece(s)
-            yc, pc, yY, pY = sol(s)
+            if s not in self._memo:
+                self._memo[s] = sol(s)
+            yc, pc, yY, pY = self._memo[s]
             y = c * yc + Y * yY
             phi = c * pc + Y * pY
             lam = number(self.blade.length)
