@@ -12,9 +12,9 @@ T = 2π/√n² of the directly solved suspension (pendsym.suspension.modes, no v
 and derivatives of the shot end values v0, vλ, w0, wλ (pendsym.blade), both by
 the 5-point central stencil [8(f(h) − f(−h)) − (f(2h) − f(−2h))]/(12h) (error
 O(h⁴)) on blades of length λ(1 + kH) with the same M(s), or of stiffness
-M(s)(1 + kHε(s)), k = ±1, ±2, H = 10⁻⁷, solved at 30 digits (42 working digits).
-The first profile is recomputed at 45 digits with step H/10, which bounds both
-truncation and rounding of the 30-digit value.  Variations of a, R, g at a
+M(s)(1 + kHε(s)), k = ±1, ±2, H = 10⁻⁷ (λ) or 10⁻⁸ (ε), solved at 30 digits (42 working digits).
+The first profile is recomputed at 45 digits with step 2H: agreement bounds both
+the truncation (16 times larger at 2H) and the rounding of the 30-digit value.  Variations of a, R, g at a
 fixed blade need no new solve.
 """
 from __future__ import annotations
@@ -306,13 +306,18 @@ def eq63(deps):
 PROFILES = {"quick": ("uniform", "hole"), "full": ("uniform", "hole", "tapered")}
 STEPS = (-2, -1, 1, 2)
 DPS, CONFIRM_DPS = 30, 45
-HEXP = {DPS: 7, CONFIRM_DPS: 8}             # step H = 10^-HEXP (relative for λ)
+# step H (relative for λ); the 45-digit confirmation takes 2H, so that agreement bounds both the rounding
+# and the O(H⁴) truncation of the 30-digit value (pendsym.blade.Blade rounds a length through a float by
+# nsimplify, which loses or garbles most other steps: the λ family keeps H at 45 digits, which
+# confirms its rounding only)
+STEP = {DPS: sp.Rational(1, 10**8), CONFIRM_DPS: sp.Rational(2, 10**8)}
+LAM_STEP = sp.Rational(1, 10**7)
 TOL = mp.mpf("1e-25")
 TEMP = {"alpha": "1.1e-5", "alpha'": "0.9e-5", "beta_t": "-2.4e-4"}   # steel blade, brass-like rod, per degree
 EPS_KINDS = {"lin": lambda L: 1 + s / L, "one": lambda L: sp.Integer(1)}
 TRUTH = ("principal period T = 2π/√n² of the directly solved suspension (pendsym.suspension.modes, no v, w) "
          "and shot end values (pendsym.blade), differentiated by the 5-point central stencil on blades "
-         "λ(1 + kH) or M(s)(1 + kHε(s)), k = ±1, ±2, H = 1e-7, at 30 digits")
+         "λ(1 + kH) or M(s)(1 + kHε(s)), k = ±1, ±2, H = 1e-7 for λ (relative), 1e-8 for ε, at 30 digits")
 
 
 def stencil(f, h):
@@ -320,9 +325,9 @@ def stencil(f, h):
     return (8 * (f(1) - f(-1)) - (f(2) - f(-2))) / (12 * h)
 
 
-def _blade(name: str, kind: str, k: int, hexp: int) -> B.Blade:
+def _blade(name: str, kind: str, k: int, dps: int) -> B.Blade:
     b = PR.profile(name)
-    H = sp.Rational(k, 10**hexp)
+    H = k * (LAM_STEP if kind == "lam" else STEP[dps])
     if kind == "lam":
         return B.Blade(b.length * (1 + H), b.M)
     if kind == "base":
@@ -332,16 +337,16 @@ def _blade(name: str, kind: str, k: int, hexp: int) -> B.Blade:
 
 @functools.lru_cache(maxsize=128)
 def shot(name: str, kind: str = "base", k: int = 0, dps: int = DPS) -> B.BladeSolution:
-    return B.solve(_blade(name, kind, k, HEXP[dps]), dps)
+    return B.solve(_blade(name, kind, k, dps), dps)
 
 
 @functools.lru_cache(maxsize=128)
 def direct(name: str, kind: str = "base", k: int = 0, dps: int = DPS) -> SU.Suspension:
-    return SU.solve(_blade(name, kind, k, HEXP[dps]), dps)
+    return SU.solve(_blade(name, kind, k, dps), dps)
 
 
 def _step(name: str, kind: str, dps: int):
-    H = mp.mpf(10) ** -HEXP[dps]
+    H = SU.number(LAM_STEP if kind == "lam" else STEP[dps])
     return H * SU.number(PR.profile(name).length) if kind == "lam" else H
 
 
@@ -352,7 +357,9 @@ def modes_at(sus, av, Rv, gv):
 
 
 def pend(pname):
-    return tuple(mp.mpf(x) for x in PR.PENDULUMS[pname])
+    """(a, R, g) of the pendulum, exact to 60 digits."""
+    with mp.workdps(60):
+        return tuple(mp.mpf(x) for x in PR.PENDULUMS[pname])
 
 
 @functools.lru_cache(maxsize=256)
@@ -380,9 +387,9 @@ def partials(name: str, pname: str, kind: str, dps: int = DPS) -> dict:
 @functools.lru_cache(maxsize=64)
 def blade_partials(name: str, kind: str, dps: int = DPS, at: tuple = ()) -> dict:
     """d/dp of v0, vλ, w0, wλ, β1 and of v(s), w(s) at the fractions ``at`` of λ (fixed s)."""
-    L = SU.number(PR.profile(name).length)
-    h = _step(name, kind, dps)
     with mp.workdps(dps + 12):
+        L = SU.number(PR.profile(name).length)
+        h = _step(name, kind, dps)
         get = {"v0": lambda sol: sol.v0, "vl": lambda sol: sol.vl, "w0": lambda sol: sol.w0,
                "wl": lambda sol: sol.wl, "beta1": lambda sol: sol.beta1}
         for fr in at:
@@ -456,7 +463,7 @@ def _rel_pairs(pairs):
 def _finish(desc, pairs, ppairs, confirm, level, note=""):
     ev = verify.value_check(truth_desc=desc, pairs=_rel_pairs(pairs), tol=TOL,
                             params=(("profiles", ",".join(PROFILES[level])),),
-                            note=f"truth confirmed to {confirm:.1f} digits at 45 digits with step H/10 (uniform)" + note)
+                            note=f"truth confirmed to {confirm:.1f} digits at 45 digits with step 2H (H for λ) (uniform)" + note)
     if ppairs:
         pv = verify.value_check(truth_desc="", pairs=_rel_pairs(ppairs), tol=TOL)
         ev = Evidence(**{**ev.__dict__, "printed_agrees": pv.passed,
@@ -467,7 +474,7 @@ def _finish(desc, pairs, ppairs, confirm, level, note=""):
 
 
 def _confirm(fn):
-    """Digits of agreement of fn(dps) between 30 digits (step H) and 45 digits (step H/10)."""
+    """Digits of agreement of fn(dps) between 30 digits (step H) and 45 digits (step 2H)."""
     lo = fn(DPS)
     with mp.workdps(60):
         hi = fn(CONFIRM_DPS)
@@ -757,7 +764,7 @@ def specs() -> tuple[Spec, ...]:
              readings=(Reading("β (thermo-elastic coefficient)", "β_t, not the ordinate β of A"),),
              note="da/a = dR/R = α', dλ/λ = α, ε = β + 4α constant (dE/E = β, dI/I = 4α); G2 of (79)."),
         Spec(r(61, "dT"), "dT/T for a variation of g", src(n15, "61"), r"\frac{dT}{T}", eq61, deps=(r(58, "dT"),),
-             printed=lambda: gam * Gs / 2, defs=D + ((Gs, -1 + G2 / Q),), check=g_check("T"),
+             printed=lambda: gam * Gs / 2, defs=D + ((Gs, -1 + G2 / (a + wl + K**2 * beta1)),), check=g_check("T"),
              note="ε = −dg/g (M = EI/(mg)) and −½dg/g from the factor g of (34)."),
         Spec(r(62, "G"), "coefficient of sensitivity G", src(n15, "62"), "G", eq62, deps=(r(61, "dT"),),
              printed=lambda: -1 + G2 / Q, defs=D, check=g_check("G")),
