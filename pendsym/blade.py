@@ -54,7 +54,9 @@ class Blade:
     var: sp.Symbol = S
 
     def __post_init__(self):
-        object.__setattr__(self, "length", sp.nsimplify(sp.sympify(self.length)))
+        length = sp.sympify(self.length)
+        # an exact number stays as it is (nsimplify would round λ(1 + 1e-9) back to λ)
+        object.__setattr__(self, "length", length if length.is_Rational else sp.nsimplify(length))
         object.__setattr__(self, "M", sp.sympify(self.M))
         if not (self.length.is_number and self.length > 0):
             raise ValueError(f"the length must be a positive number, got {self.length}")

@@ -43,6 +43,7 @@ def ends(expr: sp.Expr) -> sp.Expr:
 
 
 # ---------------------------------------------------------------- n°3: (15), (16)
+@functools.lru_cache(maxsize=1)
 def wronskian_derivative() -> sp.Expr:
     """d/ds(v w' − w v') with v'' = v/M, w'' = w/M (9): identically 0 (n°3, before (15))."""
     expr = sp.diff(v(s) * w(s).diff(s) - w(s) * v(s).diff(s), s)
@@ -60,6 +61,7 @@ def wronskian_at_lambda() -> sp.Expr:
 
 
 # ---------------------------------------------------------------- n°5: (21)–(24)
+@functools.lru_cache(maxsize=1)
 def beta_integral() -> sp.Expr:
     """β = ∫_0^λ φ ds with φ = Yφ1 + θφ2 (13), φ1 = 1 + v', φ2 = w' (11): (21) with (22) unreduced."""
     phi = Y * (1 + v(s).diff(s)) + theta * w(s).diff(s)
@@ -76,11 +78,13 @@ def beta2_def() -> sp.Expr:
     return sp.expand(beta_integral().coeff(theta).subs(w0, wronskian_at_lambda()))
 
 
+@functools.lru_cache(maxsize=1)
 def Y_of_end() -> sp.Expr:
     """Y from β = Yβ1 + θβ2 (21), β2 = −vλ (22): (23)."""
     return sp.solve(sp.Eq(beta, Y * beta1 + theta * beta2_def()), Y)[0]
 
 
+@functools.lru_cache(maxsize=1)
 def N_of_end() -> sp.Expr:
     """N = M_λ φ'_λ = Y vλ + θ wλ ((2) at s = λ with (14)), Y by (23): (24)."""
     phi_p = (Y * v(lam) + theta * w(lam)) / Mf(lam)              # (14) at s = λ
@@ -102,6 +106,7 @@ def linearized(expr: sp.Expr) -> sp.Expr:
     return sp.expand(sp.series(expr.subs(small, simultaneous=True), eps, 0, 2).removeO().coeff(eps))
 
 
+@functools.lru_cache(maxsize=1)
 def motion() -> tuple[sp.Expr, sp.Expr]:
     """(β'' + aθ'', R²θ'') as functions of β, θ: (5), (6) linearised, Y by (23), N by (24) → (25), (26)."""
     e5, e6 = (linearized(e) for e in newton_euler())
@@ -113,6 +118,7 @@ def motion() -> tuple[sp.Expr, sp.Expr]:
 
 
 # ---------------------------------------------------------------- n°7: (27)–(33)
+@functools.lru_cache(maxsize=1)
 def focal_conditions() -> tuple[sp.Expr, sp.Expr]:
     """y = β + (a + z)θ (27) and y'' = −n²y for all β, θ: the coefficients of β and θ → (28), (29).
 
@@ -129,6 +135,7 @@ def focal_conditions() -> tuple[sp.Expr, sp.Expr]:
     return c_beta, c_theta
 
 
+@functools.lru_cache(maxsize=1)
 def foci_quadratic() -> sp.Poly:
     """Eliminate n² between (28) and (29): the monic quadratic in z of (30)."""
     c28, c29 = focal_conditions()
@@ -137,23 +144,27 @@ def foci_quadratic() -> sp.Poly:
     return sp.Poly(sp.expand(num), z).monic()
 
 
+@functools.lru_cache(maxsize=1)
 def vieta() -> tuple[sp.Expr, sp.Expr]:
     """(z z', z + z') of the two roots of (30): (31), (32)."""
     c = foci_quadratic().all_coeffs()
     return sp.simplify(c[2]), sp.simplify(-c[1])
 
 
+@functools.lru_cache(maxsize=1)
 def n2_of_focus() -> sp.Expr:
     """n² from (28) with z = −R²/z' (31): the form −Kg/z' of (34) with K unreduced."""
     c28, _ = focal_conditions()
     return sp.simplify(sp.solve(c28, n2)[0].subs(z, -R**2 / zp))
 
 
+@functools.lru_cache(maxsize=1)
 def K_of_zp() -> sp.Expr:
     """K defined by n² = −Kg/z' (34): K = −n² z'/g → (35)."""
     return sp.simplify(-n2_of_focus() * zp / g)
 
 
+@functools.lru_cache(maxsize=1)
 def product_shifted() -> sp.Expr:
     """(a + z − vλ)(a + z' − vλ) expanded with the Vieta relations (31), (32): (33)."""
     prod, total = vieta()
@@ -164,9 +175,9 @@ def product_shifted() -> sp.Expr:
     return sp.factor(sp.expand(expr))
 
 
+@functools.lru_cache(maxsize=1)
 def K_of_z() -> sp.Expr:
     """K of (35) rewritten by (33): (36)."""
-    target = sp.Symbol("P33")
     k35 = K_of_zp()
     # a + z' − vλ = (33)/(a + z − vλ)
     return sp.simplify(k35.subs(zp, vl - a + product_shifted() / (a + z - vl)))
