@@ -129,12 +129,8 @@ def free_swing_time(alpha_val, params: dict):
 
 
 @lru_cache(maxsize=None)
-def swing(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, h_val: str = "0.2",
-          m_val: str = "1", g_val: str = "1", l_val: str = "1") -> tuple:
-    """One swing from rest at θ = α on the slow manifold: (T, θ at T, y1 at 0, T0, t at θ = 0).
-
-    Returns mpf values; l = C/(m h) fixes C.
-    """
+def _start(alpha_val: str, K_val: str, M_val: str, dps: int, h_val: str, m_val: str, g_val: str, l_val: str):
+    """The trajectory from rest at θ = α on the slow manifold: (trajectory, y1 at 0, T0), l = C/(m h)."""
     with mp.workdps(dps):
         params = {"m": mp.mpf(m_val), "h": mp.mpf(sp.Rational(h_val).p) / sp.Rational(h_val).q,
                   "g": mp.mpf(g_val), "K": mp.mpf(K_val),
@@ -145,9 +141,34 @@ def swing(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, h_val: st
         s0, c0 = mp.sin(a), mp.cos(a)
         y0 = ic(s0, c0, params["m"], params["h"], params["C"], params["g"], params["K"], params["M"])
         traj = truth.integrate(rhs(params), [s0, c0, 0, y0, 0], dps)
-        T0 = free_swing_time(a, params)
+        return traj, y0, free_swing_time(a, params)
+
+
+def _key(alpha_val, K_val, M_val, dps, h_val="0.2", m_val="1", g_val="1", l_val="1"):
+    return alpha_val, K_val, M_val, dps, h_val, m_val, g_val, l_val
+
+
+@lru_cache(maxsize=None)
+def lowest_time(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, h_val: str = "0.2",
+                m_val: str = "1", g_val: str = "1", l_val: str = "1") -> tuple:
+    """(t at θ = 0, T0) of the swing from rest at α: only the first half swing is integrated."""
+    traj, _, T0 = _start(*_key(alpha_val, K_val, M_val, dps, h_val, m_val, g_val, l_val))
+    with mp.workdps(dps):
+        return truth.event(traj, lambda y, t: y[0], T0 / 2, width=T0 / 8), T0
+
+
+@lru_cache(maxsize=None)
+def swing(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, h_val: str = "0.2",
+          m_val: str = "1", g_val: str = "1", l_val: str = "1") -> tuple:
+    """One swing from rest at θ = α on the slow manifold: (T, θ at T, y1 at 0, T0, t at θ = 0).
+
+    Returns mpf values; l = C/(m h) fixes C.
+    """
+    key = _key(alpha_val, K_val, M_val, dps, h_val, m_val, g_val, l_val)
+    traj, y0, T0 = _start(*key)
+    with mp.workdps(dps):
+        t_low, _ = lowest_time(*key)
         T = truth.event(traj, lambda y, t: y[2], T0, width=T0 / 8)
-        t_low = truth.event(traj, lambda y, t: y[0], T0 / 2, width=T0 / 8)
         s, c, _, _, _ = traj(T)
         return T, mp.atan2(s, c), y0, T0, t_low
 
@@ -159,8 +180,9 @@ def delta_measured(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30, 
     symmetric, θ(T − t) = −θ(t) (time reversal and the reflection θ, y1 → −θ, −y1), so
     both are the same; at the lowest point the O(K³) support vibration left by the start
     shifts the time by O(K³), at the turning point by O(K^2.5) (θ'' is small there).
+    Only the first half swing is integrated.
     """
-    _, _, _, T0, t_low = swing(alpha_val, K_val, M_val, dps, **kw)
+    t_low, T0 = lowest_time(alpha_val, K_val, M_val, dps, **kw)
     return 2 * t_low / T0 - 1
 
 
