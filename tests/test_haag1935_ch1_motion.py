@@ -6,10 +6,8 @@ import pytest
 import sympy as sp
 
 from derivations.haag1935 import ch1_motion as M
-from derivations.haag1935 import profiles as PR
 from derivations.haag1935.symbols import a, beta1, lam, v0, vl, w0, wl, z, zp
 from pendsym import registry, verify
-from pendsym.result import Result
 
 P = "haag1935"
 

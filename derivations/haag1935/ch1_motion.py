@@ -29,7 +29,7 @@ from pendsym.result import Evidence, Reading, Source, Spec
 from . import ch1_model as C
 from . import profiles as P
 from .ch1_model import N, X, alpha, bdd, beta, eps, n2, tdd, thd, v, w
-from .symbols import K, R, Y, a, a1, beta1, beta2, g, lam, s, theta, v0, vl, w0, wl, z, zp
+from .symbols import K, R, Y, a, beta1, beta2, g, lam, s, theta, v0, vl, w0, wl, z, zp
 
 MEMOIR = "haag1935"
 
@@ -268,6 +268,25 @@ def _digits(env30: dict, env45: dict, t30, t45) -> float:
     return min(ds) if ds else 45.0
 
 
+def confirmation() -> float:
+    """Digits to which the truth (shot v, w, the suspension's modes at the clock pendulum) of the hole blade
+    agrees between 30 and 45 digits."""
+    e30 = env_shot(CONFIRM_PROFILE, "clock", DPS)
+    with mp.workdps(CONFIRM_DPS + 10):
+        e45 = env_shot(CONFIRM_PROFILE, "clock", CONFIRM_DPS)
+    return _digits(e30, e45, 0, 0)
+
+
+def confirmed(check):
+    """Add the 45-digit confirmation to a check's Evidence: it fails below 28 digits."""
+    def run(result, level):
+        ev = check(result, level)
+        d = confirmation()
+        return Evidence(**{**ev.__dict__, "passed": bool(ev.passed and d >= 28), "confirm_digits": verify.rounded(d),
+                           "note": ev.note + f" | truth confirmed to {d:.1f} digits at {CONFIRM_DPS}"})
+    return run
+
+
 def _resid(f, t, scale) -> mp.mpf:
     return abs(mp.mpf(f) - mp.mpf(t)) / max(abs(mp.mpf(t)), mp.mpf(scale))
 
@@ -332,7 +351,7 @@ def inequality_check(desc: str, env_fn, pend: bool = False):
             f"{lb}: {mp.nstr(mv, 6)} ({mp.nstr(rel, 3)})" for lb, mv, rel in margins)
         return Evidence(kind="inequality", passed=bool(ok), truth=desc, max_residual=verify.rounded(lo),
                         printed_agrees=None if result.printed is None else bool(ok), note=note)
-    return check
+    return confirmed(check)
 
 
 # ---------------------------------------------------------------- rows of the numeric checks
@@ -413,10 +432,7 @@ def zero_check(desc, swap=False):
                         else:
                             pworst = max(pworst, r)
                     n += 1
-        e30 = env_shot(CONFIRM_PROFILE, "clock", DPS)
-        with mp.workdps(CONFIRM_DPS + 10):
-            e45 = env_shot(CONFIRM_PROFILE, "clock", CONFIRM_DPS)
-        digits = _digits(e30, e45, 0, 0)
+        digits = confirmation()
         return Evidence(kind="value", passed=bool(worst < TOL and digits >= 28), truth=desc,
                         max_residual=verify.rounded(worst),
                         printed_agrees=None if result.printed is None else bool(pworst < TOL),
@@ -537,7 +553,7 @@ def symmetric_check(key):
                         max_residual=verify.rounded(sym), printed_agrees=bool(psym < TOL),
                         note=f"relative residual per blade: {note} (symmetric blades: {', '.join(P.SYMMETRIC)}; "
                              f"the unsymmetric tapered blade must fail)")
-    return check
+    return confirmed(check)
 
 
 def _eig_n2(A) -> list:
@@ -685,11 +701,10 @@ def specs() -> tuple[Spec, ...]:
 
 
 def _specs() -> list[Spec]:
-    n1, n2_, n3, n4, n5, n6, n7, n8, n9 = (f"n°{i}" for i in range(1, 10))
+    n1, n2_, n3, n4, n5, n6, n7, n8, n9 = (f"n°{i}" for i in range(1, 10))   # n2_: n2 is n²
     W16 = ((w0, vl + wl),)
-    env_p = lambda name, pe, dps: env_shot(name, pe, dps)
     ineq = lambda desc: inequality_check(SHOT + "; " + desc, lambda name, pe, dps: shot_env(name, dps))
-    ineq_modes = lambda desc: inequality_check(EIG + "; " + desc, env_p, pend=True)
+    ineq_modes = lambda desc: inequality_check(EIG + "; " + desc, env_shot, pend=True)
     zero = zero_check
     out = [
         # ---------------------------------------------------------------- n°1
@@ -717,13 +732,13 @@ def _specs() -> list[Spec]:
              lambda d: centre_of_gravity(1),
              printed=lambda: m * bdd - m * a * thd**2 * sp.sin(theta) + m * a * tdd * sp.cos(theta) + m * g * Y,
              readings=(Reading("mαθ'^2 sin θ + mαθ'' cos θ", "m a θ'² sin θ + m a θ'' cos θ (a, not α)"),),
-             check=newton_check,
+             check=confirmed(newton_check),
              note="Derived from y_G = β + a sin θ; checked with (6) against the eigenproblem of the suspension."),
         Spec(rid(6, "moment"), "theorem of the angular momentum about G", src(n1, "6"),
              r"\frac{R^2}{g}\theta'' + N - a(Y\cos\theta - X\sin\theta)",
              lambda d: angular_momentum(),
              printed=lambda: R**2 / g * tdd - (-N + a * (Y * sp.cos(theta) - X * sp.sin(theta))),
-             check=newton_check,
+             check=confirmed(newton_check),
              note="Derived: moment about G of the couple −mgN and of (−mgX, −mgY) applied at A − G = −a(cos θ, sin θ)."),
         # ---------------------------------------------------------------- n°2
         Spec(rid(7, "dbending"), "d/ds(Mφ') = X sin φ − Y cos φ", src(n2_, "7"), r"\frac{d}{ds}(M\varphi')",
@@ -731,7 +746,7 @@ def _specs() -> list[Spec]:
              instances=INSTANCES, check=_proof("d/ds of the right side of (2), with (3), minus the printed right side of (7)",
                           lambda r: r.derived - r.printed)),
         Spec(rid(8, "linear"), "d/ds(Mφ') = φ − Y (small oscillations)", src(n2_, "8"), r"\frac{d}{ds}(M\varphi')",
-             lambda d: linearised_bending(), printed=lambda: phi_(s) - Y, instances=INSTANCES, check=eq8_check,
+             lambda d: linearised_bending(), printed=lambda: phi_(s) - Y, instances=INSTANCES, check=confirmed(eq8_check),
              note="First-order part of (7) with φ, Y = O(ε), X = 1 + O(ε²)."),
         Spec(rid(9, "v"), "M v'' − v = 0", src(n2_, "9"), "Mv'' - v", lambda d: Mf(s) * v(s).diff(s, 2) - v(s),
              printed=lambda: Mf(s) * v(s).diff(s, 2) - v(s), definition=True, instances=INSTANCES, check=pipeline.definition_check),
@@ -743,7 +758,7 @@ def _specs() -> list[Spec]:
              definition=True, check=tuple_definition_check),
         Spec(rid(12, "ends"), "φ10 = φ1λ = 0, φ20 = 0, φ2λ = 1", src(n2_, "12"),
              r"(\varphi_{10}, \varphi_{1\lambda}, \varphi_{20}, \varphi_{2\lambda})", lambda d: phi_end_values(),
-             printed=lambda: sp.Tuple(0, 0, 0, 1), check=ends12_check,
+             printed=lambda: sp.Tuple(0, 0, 0, 1), check=confirmed(ends12_check),
              note="Checked on the shot φ1, φ2 (a check of the shooting against (10)–(11))."),
         Spec(rid(13, "phi"), "φ = Yφ1 + θφ2", src(n2_, "13"), r"\varphi", lambda d: Y * phi1 + theta * phi2,
              printed=lambda: Y * phi1 + theta * phi2,
@@ -753,12 +768,13 @@ def _specs() -> list[Spec]:
                   "(so also φ_0 = 0, φ_λ = θ)."),
         Spec(rid(13, "satisfies8"), "φ = Yφ1 + θφ2 satisfies (8) for all Y, θ", src(n2_, "13"),
              r"\frac{d}{ds}(M\varphi') - (\varphi - Y)", lambda d: eq8_residual(), printed=_printed(sp.S.Zero),
-             check=phi_numeric(("0.37", "0.81"), "d/ds(Mφ') − (φ − Y) = 0 for φ = Y(1 + v') + θw' with Mv'' = v, Mw'' = w"),
+             check=confirmed(phi_numeric(("0.37", "0.81"),
+                                         "d/ds(Mφ') − (φ − Y) = 0 for φ = Y(1 + v') + θw' with Mv'' = v, Mw'' = w")),
              note="'On vérifie aisément que cette fonction satisfait à l'équation (8)': symbolic proof, and the shot φ "
                   "against the directly solved blade at interior points."),
         Spec(rid(13, "phi_ends"), "φ_0 = 0, φ_λ = θ", src(n2_, "13"), r"(\varphi_0, \varphi_\lambda)",
              lambda d: phi_ends(), printed=_printed(sp.Tuple(0, theta)),
-             check=phi_numeric(("0", "1"), "φ(0) = 0 and φ(λ) = θ from (10), (11), (13)"),
+             check=confirmed(phi_numeric(("0", "1"), "φ(0) = 0 and φ(λ) = θ from (10), (11), (13)")),
              note="Numerically: Yφ1 + θφ2 of the shot blade at s = 0, λ against the suspension's φ."),
         Spec(rid(14, "phip"), "φ' = (Yv + θw)/M", src(n2_, "14"), r"\varphi'",
              lambda d: phi_prime().subs({v(s): v_s, w(s): w_s, Mf(s): M_s}),
@@ -931,12 +947,12 @@ def _specs() -> list[Spec]:
              lambda d: sp.cancel(-product_shifted() / beta1), printed=_printed(a + wl), readings=(READ_VW,),
              check=ineq_modes("a + wλ"), note="Derived from (33): −(38)·(39)/β1."),
         Spec(rid(41, "a1"), "a1 = −wλ (critical distance)", src(n9, "41"), "a_1", lambda d: critical_distance(),
-             printed=_printed(-wl), readings=(READ_VW,), check=critical_check,
+             printed=_printed(-wl), readings=(READ_VW,), check=confirmed(critical_check),
              note="Truth: the a at which det K(a) = 0 for the suspension's stiffness (an n² crosses 0); n² signs "
                   "at a1 ± 1 cm and at a = −0.1 m."),
         Spec(rid(41, "unstable"), "for a < a1, (38) holds and (39) fails", src(n9, "41"),
              r"a < a_1:\ a + z' - v_\lambda < 0,\ a + z - v_\lambda < 0", lambda d: product_shifted(),
-             check=unstable_check, note="The derived form is (33); for a < a1 both factors are negative."),
+             check=confirmed(unstable_check), note="The derived form is (33); for a < a1 both factors are negative."),
         Spec(rid(41, "below_vl"), "−wλ < vλ", src(n9, "41"), r"v_\lambda + w_\lambda > 0",
              lambda d: C.wronskian_at_lambda(), printed=_printed(vl - (-wl)), readings=(READ_VW,),
              check=ineq("vλ + wλ (= w0 by (16))")),
