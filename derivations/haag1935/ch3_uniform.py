@@ -946,8 +946,12 @@ CANCEL = ("Printed forms cancel badly as u → 0: 1 − 2U/u, U_1 − 1/u, 1/u²
           "cancel likewise; series in u are needed below u ≈ 1e-2.")
 
 
+# the obvious reading of the printed forms in double precision: (156), (160) as written
+NAIVE = ((omega, u / lam), (M, lam**2 / u**2), (U, sp.tanh(u / 2)), (U1, 1 / sp.sinh(u)), (U2, 1 / sp.tanh(u)))
+
+
 def kern(doc, *args, unit="1"):
-    return KernelSpec(args=tuple(args), doc=doc + " " + CANCEL, unit=unit)
+    return KernelSpec(args=tuple(args), doc=doc + " " + CANCEL, unit=unit, naive_defs=NAIVE)
 
 
 # ================================================================ the Specs
@@ -1176,7 +1180,8 @@ def specs() -> tuple[Spec, ...]:
                                                    + sp.Rational(3, 2) * U1**2 + (U - 3 * U1) / (2 * u)),
              defs=D_, check=blade_check(f"(1/λ)∫y² ds, y of (77) with Y = K, θ = 1, by quadrature on the {BLADE}",
                                         lambda sol, pt: sol.inertia(mp.mpf(pt["K"])), extra={"m'": "1"}),
-             kernel=kern("I_λ/m' of (182).", LAM_ARG, U_ARG, K_ARG, unit="m^2")),
+             kernel=kern("I_λ of (182).", LAM_ARG, U_ARG, K_ARG, KernelArg("m'", 1e-4, 10.0, unit="kg"),
+                         unit="kg m^2")),
         Spec(rid(182, "aux"), "∫(Ks − x_0)x'' ds (n°56)", src("n°56", "before (182)"),
              r"\int_0^\lambda (Ks - x_0)x''\,ds", I_aux_derived, deps=(rid(157, "v"), rid(157, "w")),
              printed=lambda: lam / u * (k * (u - 2 * U) - U1), defs=Dk,
