@@ -650,8 +650,10 @@ def choose_form(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> tuple[st
     if best[2].max_scaled > BOUND:
         stable = stable_form(expr, args)
         if stable is not None:
-            acc = measure(py_callable(stable[0], args), expr, args, pts)
-            if acc.max_scaled < best[2].max_scaled:
+            # decided on the full sample: the hard points of the stable pieces are there
+            full = sample_points(args, seed)
+            acc = measure(py_callable(stable[0], args), expr, args, full)
+            if acc.max_scaled < measure(py_callable(best[1], args), expr, args, full).max_scaled:
                 hard = hard_argument(expr, args).name
                 best = (f"piecewise in {hard}: series below a switch, e^(-{hard}) or derived form above",
                         stable[0], acc, stable[1])
