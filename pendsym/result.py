@@ -58,6 +58,9 @@ class KernelSpec:
     args: tuple[KernelArg, ...]
     doc: str = ""
     unit: str = "1"
+    # the obvious double-precision reading of the printed form's symbols (U → th(u/2) …), for
+    # measuring the naive transcription against the kernel; the Spec's defs when empty
+    naive_defs: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
 
 
 @dataclass(frozen=True)

@@ -111,3 +111,24 @@ def test_corrected_exponent_agrees(built):
 def test_all_checks_pass_quick(built):
     failed = [r.id for r in built.values() if r.spec.check and not r.spec.check(r, "quick").passed]
     assert failed == []
+
+
+# ---------------------------------------------------------------- (180)–(181): stresses of both vibrations
+def test_static_launch_KA_reduces_to_the_focus_distance():
+    """K·A = (Q/mg)(b − a − z') follows from (67), (27), (36) and (33) (n°18, (68))."""
+    r = registry.build([f"{P}.eq180.T0"])[f"{P}.eq180.T0"]
+    assert not r.derived.has(C.vl) and not r.derived.has(C.wl)
+    # the first term is (U + U1/K)(b − a − z') cos nt, the second carries K', not K
+    first = sp.expand(r.derived).coeff(sp.cos(C.n_p * C.t_))
+    assert sp.simplify(first - C.SQ * C.Q / C.mgs * (U + U1 / K) * (C.b - C.a - C.zp) / (C.z - C.zp)) == 0
+    second = sp.expand(r.derived).coeff(sp.cos(C.n_s * C.t_))
+    assert second.has(C.Kp) and not second.has(K)
+
+
+def test_launch_stresses_against_the_modal_solution_and_the_printed_K_prime():
+    built = registry.build([f"{P}.eq180.T0", f"{P}.eq181.T0"])
+    ev180 = built[f"{P}.eq180.T0"].spec.check(built[f"{P}.eq180.T0"], "quick")
+    ev181 = built[f"{P}.eq181.T0"].spec.check(built[f"{P}.eq181.T0"], "quick")
+    assert ev180.passed and ev181.passed
+    assert ev180.printed_agrees is False        # K where K' stands: a discrepancy, not bent
+    assert ev181.printed_agrees is True

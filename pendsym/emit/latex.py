@@ -96,10 +96,19 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
            "pys": num(k.py_accuracy.max_scaled) if k.py_accuracy else "--",
            "c": num(k.c_accuracy.max_ulp) if k.c_accuracy else "--",
            "cs": num(k.c_accuracy.max_scaled) if k.c_accuracy else "--"} for k in kernels]
+    naive = [{"name": tex_text(k.name), "form": k.naive.form, "naive": num(k.naive.accuracy.max_scaled),
+              "stable": num(max(a.max_scaled for a in (k.py_accuracy, k.c_accuracy) if a)),
+              "fails": tex_text(_short(k.naive.fails))} for k in kernels if k.naive and k.py_accuracy]
     counts = {s: sum(1 for it in items if it["status"] == s) for s in ("match", "discrepancy", "derived-only")}
     return render("report.tex.j2", memoir=memoir, title=tex_text(title), groups=groups, discrepancies=disc,
-                  kernels=ks, bench=bench, counts=counts, total=len(items),
+                  kernels=ks, naive=naive, bench=bench, counts=counts, total=len(items),
                   verified=sum(1 for it in items if it["verified"]))
+
+
+def _short(fails: str, runs: int = 4) -> str:
+    """The first few failing ranges of a naive form (the list can be long)."""
+    parts = fails.split("; ")
+    return "; ".join(parts[:runs]) + (f"; … ({len(parts) - runs} more)" if len(parts) > runs else "")
 
 
 def _selected(item: dict, selector) -> bool:
