@@ -18,17 +18,28 @@ def memoir_meta(memoir: str):
     return getattr(mod, "TITLE", memoir), getattr(mod, "SECTIONS", ())
 
 
-def emit_kernels(memoir: str, records, log) -> list[kn.Kernel]:
+def emit_kernels(memoir: str, records, log) -> tuple[list[kn.Kernel], list[kn.Kernel]]:
+    """(emitted, withheld): a kernel whose measured error exceeds kn.BOUND ulp × max(1, κ) in
+    Python or C is not emitted; it is listed in the report with its measured figures."""
     if not getattr(importlib.import_module(registry.MEMOIRS[memoir]), "KERNELS_READY", True):
         log(f"{memoir}: kernels not emitted (the memoir says its stable forms are not ready)")
-        return []
+        return [], []
     results = {rec.result.id: rec.result for rec in records}
     wanted = [i for i, r in results.items() if r.spec.kernel is not None and kn.closed_form(r.derived)]
     ks = [k for k in parallel.per_result(results, wanted, cached_kernel) if k is not None]
     if ks and shutil.which("cc"):
         ks = kn.with_c_accuracy(ks, results, lambda kk: files.c_standalone(memoir, kk))
-    log(f"{memoir}: {len(ks)} kernels")
-    return ks
+    held = [k for k in ks if not within_bound(k)]
+    ks = [k for k in ks if within_bound(k)]
+    log(f"{memoir}: {len(ks)} kernels" + (f", {len(held)} withheld over the bound: "
+                                           + ", ".join(k.name for k in held) if held else ""))
+    return ks, held
+
+
+def within_bound(k: kn.Kernel) -> bool:
+    """The kernel holds kn.BOUND ulp × max(1, κ) on its measured sample (Python and, if built, C)."""
+    accs = [a for a in (k.py_accuracy, k.c_accuracy) if a is not None]
+    return bool(accs) and all(a.max_scaled <= kn.BOUND for a in accs)
 
 
 def cached_kernel(result) -> kn.Kernel | None:
@@ -54,7 +65,7 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
     by_id = {rec.result.id: rec for rec in assessed}
     for memoir in registry.MEMOIRS:
         records = [by_id[i] for i in built[memoir]]
-        ks = emit_kernels(memoir, records, log)
+        ks, held = emit_kernels(memoir, records, log)
         for k in ks:
             all_kernels.setdefault(k.result_id, []).append(k.name)
         title, sections = memoir_meta(memoir)
@@ -63,7 +74,7 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
             out / "c" / f"{memoir}.c": files.c_source(memoir, ks),
             out / "c" / f"{memoir}.h": files.c_header(memoir, ks),
             out / "tex" / f"{memoir}.tex": latex.report(
-                memoir, title, records, ks, bench_input(out, memoir), sections),
+                memoir, title, records, ks, bench_input(out, memoir), sections, held),
         }
         for path, text in outputs.items():
             write_atomic(path, text)

@@ -61,7 +61,8 @@ def test_specs_are_well_formed(built):
         assert sid.startswith(f"{P}.eq")
         assert spec.source.eq is not None or spec.source.para
     kernels = {sid for sid, spec in specs.items() if spec.kernel}
-    wanted = {"eq159.v0", "eq159.w0", "eq159.wl", "eq159.beta1", "eq035.K_uniform", "eq034.n2_uniform",
+    # K and n² are not declared yet (see ch3_uniform: their form through z' is not stable)
+    wanted = {"eq159.v0", "eq159.w0", "eq159.wl", "eq159.beta1",
               "eq166.Gamma2", "eq166.Gamma3", "eq166.Gamma4", "eq166.Gamma5", "eq168.F1", "eq169.F2",
               "eq170.F", "eq182.I", "eq183.J"}
     assert {f"{P}.{w}" for w in wanted} <= kernels

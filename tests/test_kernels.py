@@ -100,3 +100,14 @@ def test_agm_swing_time_within_4_ulp_from_small_to_large_amplitude(clib, generat
                 for got in (f(al, kv), py.swing_time_agm(al, kv)):
                     ulps = float(abs(mp.mpf(got) - ref) / mp.mpf(math.ulp(float(ref))))
                     assert ulps <= BOUND, (al, kv, ulps)
+
+
+def test_withheld_kernels_are_over_the_bound_and_emitted_ones_within():
+    """pendsym.derive emits a kernel only within kn.BOUND; a kernel over it is withheld."""
+    from pendsym import derive
+    acc = lambda x: kn.Accuracy(points=1, max_ulp=x, max_scaled=x, worst_at=()) if x is not None else None
+    mk = lambda py, c: type("K", (), {"py_accuracy": acc(py), "c_accuracy": acc(c)})()
+    assert derive.within_bound(mk(3.9, 1.0))
+    assert not derive.within_bound(mk(3.9, 4.1))
+    assert not derive.within_bound(mk(5.0, None))
+    assert not derive.within_bound(mk(None, None))

@@ -56,7 +56,7 @@ def num(x) -> str:
 
 
 def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel], bench: str | None,
-           sections: Sequence[tuple[str, str]]) -> str:
+           sections: Sequence[tuple[str, str]], withheld: Sequence = ()) -> str:
     """The report's LaTeX text.  sections: (paragraph range such as "18-20" or a tuple of ids, heading)."""
     items = []
     for rec in records:
@@ -99,9 +99,13 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
     naive = [{"name": tex_text(k.name), "form": k.naive.form, "naive": num(k.naive.accuracy.max_scaled),
               "stable": num(max(a.max_scaled for a in (k.py_accuracy, k.c_accuracy) if a)),
               "fails": tex_text(_short(k.naive.fails))} for k in kernels if k.naive and k.py_accuracy]
+    held = [{"name": tex_text(k.name), "rule": k.rule, "id": k.result_id,
+             "pys": num(k.py_accuracy.max_scaled) if k.py_accuracy else "--",
+             "cs": num(k.c_accuracy.max_scaled) if k.c_accuracy else "--",
+             "naive": num(k.naive.accuracy.max_scaled) if k.naive else "--"} for k in withheld]
     counts = {s: sum(1 for it in items if it["status"] == s) for s in ("match", "discrepancy", "derived-only")}
     return render("report.tex.j2", memoir=memoir, title=tex_text(title), groups=groups, discrepancies=disc,
-                  kernels=ks, naive=naive, bench=bench, counts=counts, total=len(items),
+                  kernels=ks, naive=naive, withheld=held, bench=bench, counts=counts, total=len(items),
                   verified=sum(1 for it in items if it["verified"]))
 
 
