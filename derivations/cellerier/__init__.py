@@ -12,3 +12,15 @@ SECTIONS = (
     (tuple(s.id for s in static_support.specs()), "A support of static compliance K"),
     (tuple(s.id for s in elastic_bar.specs()), "The support as an elastic bar"),
 )
+
+
+# Checks that integrate the same trajectories (lru-cached in derivations.cellerier.truth): the
+# pipeline runs each group in one worker so that the second reuses the first's integrations.
+# A step checked "through" the Results it feeds (pipeline.through) goes after them.
+AFFINITY = (
+    ("cellerier.delta_general", "cellerier.alpha1_general", "cellerier.delta_support"),
+    ("cellerier.delta_static_finite", "cellerier.alpha1_static"),
+    ("cellerier.delta_static", "cellerier.y1dd", "cellerier.delta_static_integral"),
+    ("cellerier.example_delta", "cellerier.delta_practical"),
+    ("cellerier.equation", "cellerier.equation_l"),
+)

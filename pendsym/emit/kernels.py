@@ -397,8 +397,15 @@ class KernelPy(PythonCodePrinter):
     """Python printer for math-only kernels (no SymPy at import)."""
 
 
-def _body(expr: sp.Expr, printer, decl: str, end: str) -> tuple[list[str], str]:
+@functools.lru_cache(maxsize=256)
+def _cse(expr: sp.Expr) -> tuple:
+    """Common subexpressions of a kernel (the C, header and Python printers share them)."""
     subs, (red,) = sp.cse([expr], symbols=sp.numbered_symbols("x_"), optimizations="basic")
+    return tuple(subs), red
+
+
+def _body(expr: sp.Expr, printer, decl: str, end: str) -> tuple[list[str], str]:
+    subs, red = _cse(expr)
     lines = [f"{decl}{printer.doprint(s)} = {printer.doprint(v)}{end}" for s, v in subs]
     return lines, printer.doprint(red)
 
@@ -559,16 +566,34 @@ def _reference(expr: sp.Expr, syms) -> tuple[Callable, Callable]:
     return f, cond
 
 
+@functools.lru_cache(maxsize=64)
+def _reference_of(expr: sp.Expr, syms: tuple) -> tuple[Callable, Callable]:
+    return _reference(expr, list(syms))
+
+
+@functools.lru_cache(maxsize=100_000)
+def _truth_at(expr: sp.Expr, syms: tuple, p: tuple) -> tuple:
+    """(50-digit value, condition number) of expr at the point p; every candidate form of a
+    kernel is measured on the same points, so each is computed once."""
+    f, cond = _reference_of(expr, syms)
+    with mp.workdps(50):
+        xs = [mp.mpf(x) for x in p]
+        true = f(*xs)
+        try:
+            kappa = float(cond(*xs)) if true != 0 else math.inf
+        except (ZeroDivisionError, OverflowError, ValueError):
+            kappa = math.inf
+        return true, kappa
+
+
 def _errors(fn: Callable[..., float], expr: sp.Expr, args: Sequence[KernelArg], points):
     """(point, ulp error, ulp error / max(1, κ)) at each point, against 50-digit mpmath of expr;
     a non-finite value or an exception (overflow) counts as an infinite error."""
     by = {s.name: s for s in expr.free_symbols}
-    syms = [by.get(a.name, sp.Symbol(a.name)) for a in args]
-    f, cond = _reference(expr, syms)
+    syms = tuple(by.get(a.name, sp.Symbol(a.name)) for a in args)
     with mp.workdps(50):
         for p in points:
-            xs = [mp.mpf(x) for x in p]
-            true = f(*xs)
+            true, kappa = _truth_at(expr, syms, tuple(p))
             try:
                 got = fn(*p)
             except (OverflowError, ZeroDivisionError, ValueError):
@@ -580,7 +605,7 @@ def _errors(fn: Callable[..., float], expr: sp.Expr, args: Sequence[KernelArg], 
                 yield p, err_ulp, 0.0 if abs(got) < 1e-300 else math.inf
             else:
                 err_ulp = float(abs(mp.mpf(got) - true) / mp.mpf(math.ulp(float(true))))
-                yield p, err_ulp, err_ulp / max(1.0, float(cond(*xs)))
+                yield p, err_ulp, err_ulp / max(1.0, kappa)
 
 
 def measure(fn: Callable[..., float], expr: sp.Expr, args: Sequence[KernelArg], points) -> Accuracy:
@@ -742,6 +767,11 @@ def c_callable(lib: ctypes.CDLL, k: Kernel) -> Callable[..., float]:
     fn.restype = ctypes.c_double
     fn.argtypes = [ctypes.c_double] * len(k.args)
     return fn
+
+
+def c_accuracy(lib: ctypes.CDLL, k: Kernel, result: Result) -> Accuracy:
+    """The accuracy of one compiled C kernel on its sample."""
+    return measure(c_callable(lib, k), result.derived, k.args, sample_points(k.args, k.name))
 
 
 def with_c_accuracy(kernels: Sequence[Kernel], results: dict[str, Result], c_text_of: Callable) -> list[Kernel]:
