@@ -108,6 +108,16 @@ def growth(blade: Blade) -> mp.mpf:
     return total
 
 
+def integrate_pieces(pieces, f: Callable) -> mp.mpf:
+    """∫ f(s) ds over the pieces (a, b, _, M on the piece) by Gauss–Legendre quadrature, split at
+    the jumps of M and into sub-intervals of about 2 nepers of growth, at the working precision."""
+    total = mp.mpf(0)
+    for a, b, _, Mf in pieces:
+        n = 1 + int(mp.quad(lambda x: 1 / mp.sqrt(abs(Mf(x))), [a, b], maxdegree=4) / 2)
+        total += mp.quad(f, mp.linspace(a, b, n + 1), method="gauss-legendre")
+    return total
+
+
 # ---------------------------------------------------------------- the shooting solution
 @dataclass(frozen=True)
 class BladeSolution:
@@ -197,11 +207,7 @@ class BladeSolution:
     def integrate(self, f: Callable) -> mp.mpf:
         """∫_0^λ f(s) ds by mpmath quad, split at the jumps and into pieces of ~2 nepers."""
         with mp.workdps(self.wdps):
-            total = mp.mpf(0)
-            for a, b, _, Mf in self.pieces:
-                n = 1 + int(mp.quad(lambda x: 1 / mp.sqrt(abs(Mf(x))), [a, b], maxdegree=4) / 2)
-                total += mp.quad(f, mp.linspace(a, b, n + 1), method="gauss-legendre")
-            return total
+            return integrate_pieces(self.pieces, f)
 
     def F(self, n: int, K) -> mp.mpf:
         """F_n = ∫ (Kφ1 + φ2)^n ds (eq. 79)."""

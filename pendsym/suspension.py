@@ -101,11 +101,7 @@ class Suspension:
     def integrate(self, f) -> mp.mpf:
         """∫_0^λ f(s) ds by Gauss–Legendre quadrature, split at the jumps of M."""
         with mp.workdps(self.wdps):
-            total = mp.mpf(0)
-            for a, b, _, Mf in self.pieces:
-                n = 1 + int(mp.quad(lambda x: 1 / mp.sqrt(abs(Mf(x))), [a, b], maxdegree=4) / 2)
-                total += mp.quad(f, mp.linspace(a, b, n + 1), method="gauss-legendre")
-            return total
+            return B.integrate_pieces(self.pieces, f)
 
 
 @functools.lru_cache(maxsize=32)
