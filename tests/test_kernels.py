@@ -111,3 +111,10 @@ def test_withheld_kernels_are_over_the_bound_and_emitted_ones_within():
     assert not derive.within_bound(mk(3.9, 4.1))
     assert not derive.within_bound(mk(5.0, None))
     assert not derive.within_bound(mk(None, None))
+
+
+def test_identifiers_avoid_python_keywords():
+    """A symbol named like a keyword (Haag's λ is the Symbol 'lambda') gets a usable name."""
+    assert kn.identifier("lambda") == "lambda_"
+    assert kn.identifier("p'") == "p_prime"
+    compile(f"def f({kn.identifier('lambda')}, {kn.identifier('u')}):\n    return 0\n", "<k>", "exec")

@@ -1064,6 +1064,9 @@ def specs() -> tuple[Spec, ...]:
              deps=(rid(70, "momentum"),),
              printed=lambda: V * ((a - b) ** 2 + R**2 * (1 - hr * m / mq)) / ((a - b) ** 2 + R**2 * (1 + hr * m / mq)),
              check=check_impact(2, "V'"),
+             readings=(Reading("(a − b)² + R²(1 + h m/m′) in the denominator",
+                               "as printed; the derivation and (74) have R²(1 + m/m′): an h misplaced from the "
+                               "numerator's h m/m′, by the OCR or in the memoir", certain=False),),
              note="The derived denominator is (a − b)² + R²(1 + m/m'), that of (74); the printed "
                   "R²(1 + h m/m') gives V' = V for h = 0 (no momentum given to the pendulum), which "
                   "contradicts the momentum equation printed just before (74)."),

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ctypes
 import functools
+import keyword
 import math
 import random
 import re
@@ -413,7 +414,8 @@ def _body(expr: sp.Expr, printer, decl: str, end: str) -> tuple[list[str], str]:
 def identifier(name: str) -> str:
     """A C and Python identifier for a symbol's name (p' → p_prime)."""
     out = re.sub(r"\W", "_", name.replace("'", "_prime"))
-    return out if out[:1].isalpha() else "a_" + out
+    out = out if out[:1].isalpha() else "a_" + out
+    return out + "_" if keyword.iskeyword(out) else out          # lambda → lambda_
 
 
 def _printable(k: "Kernel") -> sp.Expr:
