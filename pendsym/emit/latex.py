@@ -91,7 +91,7 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
     if rest:
         groups.append({"heading": "Other results", "items": rest})
     disc = [it for it in items if it["status"] == "discrepancy"]
-    ks = [{"name": tex_text(k.name), "rule": k.rule, "id": k.result_id,
+    ks = [{"name": tex_text(k.name), "rule": tex_text(k.rule), "id": k.result_id,
            "py": num(k.py_accuracy.max_ulp) if k.py_accuracy else "--",
            "pys": num(k.py_accuracy.max_scaled) if k.py_accuracy else "--",
            "c": num(k.c_accuracy.max_ulp) if k.c_accuracy else "--",
@@ -99,7 +99,7 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
     naive = [{"name": tex_text(k.name), "form": k.naive.form, "naive": num(k.naive.accuracy.max_scaled),
               "stable": num(max(a.max_scaled for a in (k.py_accuracy, k.c_accuracy) if a)),
               "fails": tex_text(_short(k.naive.fails))} for k in kernels if k.naive and k.py_accuracy]
-    held = [{"name": tex_text(k.name), "rule": k.rule, "id": k.result_id,
+    held = [{"name": tex_text(k.name), "rule": tex_text(k.rule), "id": k.result_id,
              "pys": num(k.py_accuracy.max_scaled) if k.py_accuracy else "--",
              "cs": num(k.c_accuracy.max_scaled) if k.c_accuracy else "--",
              "naive": num(k.naive.accuracy.max_scaled) if k.naive else "--"} for k in withheld]
