@@ -16,15 +16,20 @@ from .io import write_atomic
 from .result import Result
 
 
+def _module(memoir: str):
+    """The memoir's derivations package (its TITLE, SECTIONS, KERNELS_READY, AFFINITY)."""
+    return importlib.import_module(registry.MEMOIRS[memoir])
+
+
 def memoir_meta(memoir: str):
-    mod = importlib.import_module(registry.MEMOIRS[memoir])
+    mod = _module(memoir)
     return getattr(mod, "TITLE", memoir), getattr(mod, "SECTIONS", ())
 
 
 def kernel_ids(memoir: str, results) -> list[str]:
     """The Results of a memoir that ask for a kernel and have a closed form (none if the memoir
     says its kernels are not ready)."""
-    if not getattr(importlib.import_module(registry.MEMOIRS[memoir]), "KERNELS_READY", True):
+    if not getattr(_module(memoir), "KERNELS_READY", True):
         return []
     return [i for i, r in results.items() if r.spec.kernel is not None and kn.closed_form(r.derived)]
 
@@ -112,13 +117,13 @@ def _job(jobs):
         if kind == "kernel":
             out.append(cached_kernel(result))
         else:
-            out.append((pipeline.compare(result), pipeline.check(result, level)))
+            out.append(pipeline.assessed(result, level))
     return out
 
 
 def affinity(memoir: str) -> tuple[tuple[str, ...], ...]:
     """Groups of Results whose checks are best run in one worker (a scheduling hint only)."""
-    return getattr(importlib.import_module(registry.MEMOIRS[memoir]), "AFFINITY", ())
+    return getattr(_module(memoir), "AFFINITY", ())
 
 
 def check_jobs(memoir: str, results, level: str) -> dict[str, list]:

@@ -1,6 +1,7 @@
 """The spine: build → compare → verify → emit.  Each stage is a plain function."""
 from __future__ import annotations
 
+import functools
 import json
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -51,12 +52,9 @@ def check(result: Result, level: str = "full") -> Evidence | None:
     return cache.memo(key, run)
 
 
-def _assess_full(r: Result):
-    return compare(r), check(r, "full")
-
-
-def _assess_quick(r: Result):
-    return compare(r), check(r, "quick")
+def assessed(r: Result, level: str = "full") -> tuple[tuple[str, str], Evidence | None]:
+    """(comparison, evidence) of one Result: stages 2 and 3."""
+    return compare(r), check(r, level)
 
 
 def _compare_only(r: Result):
@@ -67,7 +65,7 @@ def assess(results: Iterable[Result], level: str = "full", run_checks: bool = Tr
     """Compare every Result and run its check, in parallel over the cores."""
     results = list(results)
     by_id = {r.id: r for r in results}
-    fn = (_assess_full if level == "full" else _assess_quick) if run_checks else _compare_only
+    fn = functools.partial(assessed, level=level) if run_checks else _compare_only
     done = parallel.per_result(by_id, [r.id for r in results], fn)
     return [Record(r, status, how, ev) for r, ((status, how), ev) in zip(results, done)]
 

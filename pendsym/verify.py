@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import hashlib
 import random
-from typing import Callable, Iterable, Sequence
+from typing import Callable, Iterable, Mapping, Sequence
 
 import mpmath as mp
 import sympy as sp
@@ -70,7 +70,6 @@ def numeric_difference(a: sp.Expr, b: sp.Expr, seed: str, points: int = 6, dps: 
     random; both sides are evaluated by mpmath (integrals by mpmath quad).
     """
     rng = seeded_rng(seed)
-    diff = a - b
     undef = sorted(a.atoms(AppliedUndef) | b.atoms(AppliedUndef), key=sp.srepr)
     stand = [sp.Dummy(f"f{i}") for i in range(len(undef))]
     a2, b2 = (x.xreplace(dict(zip(undef, stand))) for x in (a, b))
@@ -127,6 +126,18 @@ def compare_forms(printed: sp.Expr, derived: sp.Expr, seed: str, instances=()) -
 def lambdify_mp(expr: sp.Expr, symbols: Iterable[sp.Symbol]) -> Callable:
     """An mpmath evaluator of expr (works at the precision in force)."""
     return sp.lambdify(tuple(symbols), expr, modules="mpmath")
+
+
+def value_at(expr: sp.Expr, env: Mapping) -> object:
+    """expr at env by mpmath at the precision in force: env maps a symbol's name, or an applied
+    undefined function such as v(s) or F(2), to its value."""
+    expr = sp.sympify(expr)
+    apps = sorted(expr.atoms(AppliedUndef), key=sp.srepr)
+    stand = [sp.Dummy() for _ in apps]
+    ex = expr.xreplace(dict(zip(apps, stand)))
+    syms = sorted(ex.free_symbols - set(stand), key=lambda x: x.name)
+    f = lambdify_mp(ex, [*syms, *stand])
+    return f(*([mp.mpf(env[x.name]) for x in syms] + [mp.mpf(env[ap]) for ap in apps]))
 
 
 def order_check(*, param: str, values: Sequence, truth: Callable, derived: Callable,

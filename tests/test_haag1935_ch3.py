@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from derivations.haag1935 import ch3_uniform as C
-from derivations.haag1935.symbols import DEFS, K, U, U1, U2, k, lam, n, u
+from derivations.haag1935.symbols import DEFS, K, U, U1, k, n, u
 from pendsym import pipeline, registry, verify
 
 P = "haag1935"

@@ -23,7 +23,6 @@ import functools
 
 import mpmath as mp
 import sympy as sp
-from sympy.core.function import AppliedUndef
 
 from pendsym import suspension as SU
 from pendsym import verify
@@ -77,17 +76,8 @@ def src(para: str, eq: str | None) -> Source:
 
 
 # ================================================================ derivation helpers
-K_of_zp = functools.lru_cache(maxsize=None)(C.K_of_zp)     # (35)
-K_of_z = functools.lru_cache(maxsize=None)(C.K_of_z)       # (36)
-vieta = functools.lru_cache(maxsize=None)(C.vieta)         # (31), (32)
-Y_of_end = functools.lru_cache(maxsize=None)(C.Y_of_end)   # (23)
-
-
-def linear_part(expr: sp.Expr, small=(theta, Y, C.N, Q)) -> sp.Expr:
-    """First-order part in ε of expr with the listed quantities of order ε and X = 1 + O(ε²) (n°2)."""
-    sub = {x: eps * x for x in small}
-    sub[C.X] = 1 + eps**2 * C.X
-    return sp.expand(sp.series(expr.subs(sub, simultaneous=True), eps, 0, 2).removeO().coeff(eps))
+# ch1_model's steps are cached there (each is computed once per process)
+K_of_zp, K_of_z, vieta, Y_of_end = C.K_of_zp, C.K_of_z, C.vieta, C.Y_of_end   # (35), (36), (31)–(32), (23)
 
 
 @functools.lru_cache(maxsize=None)
@@ -173,7 +163,7 @@ def static_equations():
     forces = [((a - b) * u, sp.Matrix([1, 0])), (-b * u, sp.Matrix([-C.X, -Y])), (sp.zeros(2, 1), Q / mg * perp)]
     proj = sum((f[1] for _, f in forces), sp.S.Zero)
     moment = sum((rv[0] * f[1] - rv[1] * f[0] for rv, f in forces), sp.S.Zero) - C.N
-    return linear_part(proj), linear_part(moment)
+    return C.linearized(proj, (Q,)), C.linearized(moment, (Q,))
 
 
 @functools.lru_cache(maxsize=None)
@@ -459,18 +449,7 @@ def pairs(level: str, heavy: bool = False) -> tuple:
     return pts[:2] + pts[3:4] if heavy and level == "full" else pts
 
 
-def mpf(x) -> mp.mpf:
-    return mp.mpf(x) if not isinstance(x, str) else mp.mpf(x)
-
-
-def evaluate(expr: sp.Expr, env: dict):
-    """expr at env (symbol name → value; applied functions such as v(s), F(2) → value)."""
-    apps = sorted(expr.atoms(AppliedUndef), key=sp.srepr)
-    stand = [sp.Dummy() for _ in apps]
-    ex = expr.xreplace(dict(zip(apps, stand)))
-    syms = sorted(ex.free_symbols - set(stand), key=lambda x: x.name)
-    f = sp.lambdify(syms + stand, ex, modules="mpmath")
-    return f(*([mpf(env[x.name]) for x in syms] + [mpf(env[ap]) for ap in apps]))
+evaluate = verify.value_at       # expr at env (names and applied functions such as v(s), F(2))
 
 
 @functools.lru_cache(maxsize=1)

@@ -17,7 +17,7 @@ import functools
 
 import sympy as sp
 
-from .symbols import R, K, Y, a, beta1, beta2, g, lam, s, theta, v0, vl, w0, wl, z, zp
+from .symbols import R, Y, a, beta1, g, lam, s, theta, v0, vl, w0, wl, z, zp
 
 beta = sp.Symbol("beta", real=True)          # ordinate of A (n°1)
 N = sp.Symbol("N", real=True)                # couple mgN at A (n°1)
@@ -99,10 +99,11 @@ def newton_euler() -> tuple[sp.Expr, sp.Expr]:
     return e5, e6
 
 
-def linearized(expr: sp.Expr) -> sp.Expr:
-    """First-order part in ε of expr with θ, θ', θ'', β'', Y, N of order ε and X = 1 + O(ε²) (n°2)."""
-    small = {theta: eps * theta, thd: eps * thd, tdd: eps * tdd, bdd: eps * bdd, Y: eps * Y, N: eps * N,
-             X: 1 + eps**2 * X}
+def linearized(expr: sp.Expr, extra: tuple = ()) -> sp.Expr:
+    """First-order part in ε of expr with θ, θ', θ'', β'', Y, N (and the ``extra`` quantities) of
+    order ε and X = 1 + O(ε²) (n°2)."""
+    small = {x: eps * x for x in (theta, thd, tdd, bdd, Y, N, *extra)}
+    small[X] = 1 + eps**2 * X
     return sp.expand(sp.series(expr.subs(small, simultaneous=True), eps, 0, 2).removeO().coeff(eps))
 
 

@@ -29,18 +29,13 @@ from pendsym.result import Evidence, Reading, Source, Spec
 from . import ch1_model as C
 from . import profiles as P
 from .ch1_model import N, X, alpha, bdd, beta, eps, n2, tdd, thd, v, w
+# the steps of n°5–8, each cached in ch1_model (computed once per process)
+from .ch1_model import K_of_z, K_of_zp, foci_quadratic, focal_conditions, motion, n2_of_focus, product_shifted, vieta
 from .symbols import K, R, Y, a, beta1, beta2, g, lam, s, theta, v0, vl, w0, wl, z, zp
 
 MEMOIR = "haag1935"
 
 
-def _cached(fn):
-    """ch1_model's steps take no argument and return SymPy objects: compute each once per process."""
-    return functools.lru_cache(maxsize=1)(fn)
-
-
-motion, focal_conditions, foci_quadratic, vieta = map(_cached, (C.motion, C.focal_conditions, C.foci_quadratic, C.vieta))
-n2_of_focus, K_of_zp, product_shifted, K_of_z = map(_cached, (C.n2_of_focus, C.K_of_zp, C.product_shifted, C.K_of_z))
 READ_VW = Reading("ν, ω", "v, w: the OCR renders Haag's functions v, w (and their end values) as ν, ω")
 
 # ---------------------------------------------------------------- symbols of this module
@@ -250,9 +245,7 @@ def mode_env(name: str, pend: str, dps: int = DPS) -> dict:
 
 def evaluate(expr: sp.Expr, env: dict) -> mp.mpf:
     """expr at the point env (symbol name → value), at the precision in force."""
-    expr = sp.sympify(expr)
-    syms = sorted(expr.free_symbols, key=lambda x: x.name)
-    return mp.mpf(verify.lambdify_mp(expr, syms)(*[env[x.name] for x in syms]))
+    return mp.mpf(verify.value_at(expr, env))
 
 
 def _abs_terms(expr: sp.Expr, env: dict) -> mp.mpf:

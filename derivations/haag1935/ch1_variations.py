@@ -54,12 +54,6 @@ DIFF = {a: da, R: dR, lam: dlam, v0: dv0, vl: dvl, w0: dw0, wl: dwl, z: dz, zp: 
 READ_VW = Reading("ν, ω (for v, w)", "v, w: the OCR renders Haag's v, w as ν, ω")
 
 
-# ch1_model recomputes (25)–(26) on every call (~1 s each): its results are cached here
-K35 = functools.lru_cache(maxsize=1)(CM.K_of_zp)
-K36 = functools.lru_cache(maxsize=1)(CM.K_of_z)
-VIETA = functools.lru_cache(maxsize=1)(CM.vieta)
-N2_FOCUS = functools.lru_cache(maxsize=1)(CM.n2_of_focus)
-BETA1 = functools.lru_cache(maxsize=1)(CM.beta1_def)
 
 
 def rid(eq: int, name: str) -> str:
@@ -82,7 +76,7 @@ def dlogT_of_n2(n2expr: sp.Expr) -> sp.Expr:
 
 def n2_K() -> sp.Expr:
     """n² as −Kg/z': n2_of_focus divided by K_of_zp·(−g/z') must be 1 (checked), so n² = K·(−g/z')."""
-    ratio = sp.simplify(N2_FOCUS() / (K35() * (-g / zp)))
+    ratio = sp.simplify(CM.n2_of_focus() / (CM.K_of_zp() * (-g / zp)))
     if ratio != 1:
         raise ValueError("(34) does not follow from (28), (31)")
     return -K * g / zp
@@ -90,32 +84,32 @@ def n2_K() -> sp.Expr:
 
 def zp_of_K() -> sp.Expr:
     """z' from (35): z' = vλ − a − Kβ1."""
-    return sp.solve(sp.Eq(K, K35()), zp)[0]
+    return sp.solve(sp.Eq(K, CM.K_of_zp()), zp)[0]
 
 
 def z_of_K() -> sp.Expr:
     """z from (36): z = (a + wλ)/K − a + vλ."""
-    return sp.solve(sp.Eq(K, K36()), z)[0]
+    return sp.solve(sp.Eq(K, CM.K_of_z()), z)[0]
 
 
 def d_beta1() -> sp.Expr:
     """dβ1 = dλ + dvλ − dv0 from β1 = λ + vλ − v0 (22)."""
-    return total_diff(BETA1())
+    return total_diff(CM.beta1_def())
 
 
 # ================================================================ n°10: (42)–(45)
 def eq42(_deps) -> sp.Expr:
     """dT/T from (34) with dK from (35) (implicit differentiation), z' eliminated by (35)."""
-    dKv = total_diff(K35())
+    dKv = total_diff(CM.K_of_zp())
     expr = dlogT_of_n2(n2_K()).subs(dK, dKv).subs(dzp, zp * zeta)
     return sp.factor(sp.cancel(expr.subs(zp, zp_of_K())))
 
 
 def eq43(_deps) -> sp.Expr:
     """dT/T from (34) with dK from (36) and dz from d(zz') = d(−R²) (31); z eliminated by (36)."""
-    prod, _ = VIETA()
+    prod, _ = CM.vieta()
     dz_sol = sp.solve(sp.Eq(total_diff(z * zp), total_diff(prod)), dz)[0]
-    dKv = total_diff(K36())
+    dKv = total_diff(CM.K_of_z())
     expr = dlogT_of_n2(n2_K()).subs(dK, dKv).subs(dz, dz_sol)
     expr = expr.subs({dzp: zp * zeta, dR: R * rho}).subs(zp, -R**2 / z)
     return sp.factor(sp.cancel(expr.subs(z, z_of_K())))
@@ -132,7 +126,7 @@ def eq44(deps) -> sp.Expr:
 def eq45(_deps) -> sp.Expr:
     """a − a1 + K²β1 with a1 = −wλ (41), a + wλ = K(a + z − vλ) (36), Kβ1 = −(a + z' − vλ) (35)."""
     expr = a + wl + K**2 * beta1
-    expr = expr.subs(wl, sp.solve(sp.Eq(K, K36()), wl)[0]).subs(beta1, sp.solve(sp.Eq(K, K35()), beta1)[0])
+    expr = expr.subs(wl, sp.solve(sp.Eq(K, CM.K_of_z()), wl)[0]).subs(beta1, sp.solve(sp.Eq(K, CM.K_of_zp()), beta1)[0])
     return sp.factor(sp.expand(expr))
 
 

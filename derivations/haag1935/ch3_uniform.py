@@ -23,7 +23,7 @@ from pendsym import blade as B
 from pendsym import verify
 from pendsym.result import Evidence, KernelArg, KernelSpec, Reading, Source, Spec
 from .symbols import (DEFS, K, K_OF_k, E, Fn, Gam, Gn, M, R, T, U, U1, U2, Y, a, a1, b, beta1, c, e, g, k, lam,
-                      mb, n, omega, p, s, theta, u, v0, vl, w0, wl, x0, xl, z, zp)
+                      mb, n, omega, s, theta, u, vl, w0, wl, x0, xl, z, zp)
 
 MEMOIR = "haag1935"
 P = MEMOIR
@@ -759,7 +759,6 @@ def _Gamma_top_check(result, level):
             sol = blade_solution(uv, dps)
             Kv = 1 / eps
             kv = Kv * (1 - Kv)
-            pt = {"K": Kv, "lambda": LAM, "u": sp.Rational(uv)}
             return _Gam_blade(sol, {"K": Kv, "lambda": mp.mpf(LAM), "u": mp.mpf(sp.Rational(uv))}, m) / kv**q
 
         tv = evaluate(top, {"u": str(sp.N(sp.Rational(uv), 50))})

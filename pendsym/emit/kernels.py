@@ -15,7 +15,6 @@ import math
 import random
 import re
 import subprocess
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Sequence
@@ -33,7 +32,6 @@ from ..result import KernelArg, Result
 
 def _sin_basis(e: sp.Expr) -> sp.Expr:
     """Even powers of cos → powers of (1 − sin²), then factor (good near kt = 0)."""
-    w = sp.Wild("w")
     e = sp.expand(sp.expand_trig(e))
     e = e.replace(lambda x: x.is_Pow and x.base.func == sp.cos and x.exp.is_even and x.exp > 0,
                   lambda x: (1 - sp.sin(x.base.args[0]) ** 2) ** (x.exp // 2))
@@ -774,14 +772,3 @@ def c_callable(lib: ctypes.CDLL, k: Kernel) -> Callable[..., float]:
 def c_accuracy(lib: ctypes.CDLL, k: Kernel, result: Result) -> Accuracy:
     """The accuracy of one compiled C kernel on its sample."""
     return measure(c_callable(lib, k), result.derived, k.args, sample_points(k.args, k.name))
-
-
-def with_c_accuracy(kernels: Sequence[Kernel], results: dict[str, Result], c_text_of: Callable) -> list[Kernel]:
-    """Measure the compiled C kernels and record their accuracy."""
-    out = []
-    with tempfile.TemporaryDirectory() as d:
-        lib = compile_c(c_text_of(kernels), Path(d))
-        for k in kernels:
-            acc = measure(c_callable(lib, k), results[k.result_id].derived, k.args, sample_points(k.args, k.name))
-            out.append(Kernel(**{**k.__dict__, "c_accuracy": acc}))
-    return out
