@@ -5,6 +5,7 @@ import importlib
 import multiprocessing
 import shutil
 import tempfile
+import time
 from pathlib import Path
 from typing import Callable
 
@@ -150,9 +151,11 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
     out = Path(out)
     written: list[Path] = []
     all_records, all_kernels = [], {}
+    start = time.monotonic()
     built = build_all()
     for memoir in registry.MEMOIRS:
         log(f"{memoir}: {len(built[memoir])} results built")
+    log(f"built in {time.monotonic() - start:.0f} s")
     # one pass over the cores for every check and every kernel form, the longest first so that
     # short ones fill the tail; each result is deterministic, so the order changes nothing
     order = sorted(registry.MEMOIRS, key=lambda m: SCHEDULE.index(m) if m in SCHEDULE else len(SCHEDULE))
@@ -169,8 +172,10 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
         for (kind, _, r), o in zip(jobs[key], outs):
             done[f"{kind}:{r.id}"] = o
     formed = {m: [k for k in (done[f"kernel:{i}"] for i in wanted[m]) if k is not None] for m in registry.MEMOIRS}
+    log(f"verified and formed at {time.monotonic() - start:.0f} s")
     with tempfile.TemporaryDirectory() as tmp:
         formed = c_measured(formed, built, Path(tmp))
+    log(f"C kernels measured at {time.monotonic() - start:.0f} s")
     for memoir in registry.MEMOIRS:
         records = [pipeline.Record(r, *done[f"check:{i}"][0], done[f"check:{i}"][1]) for i, r in built[memoir].items()]
         ks, held = split_kernels(memoir, formed[memoir], log)

@@ -15,7 +15,7 @@ def built():
 
 def test_all_built(built):
     assert set(IDS) <= set(built)
-    assert len(IDS) == 22
+    assert len(IDS) == 29
 
 
 @pytest.mark.parametrize("rid, status", [

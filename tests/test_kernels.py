@@ -67,7 +67,7 @@ def _fn(lib, name, n):
 def test_every_c_kernel_within_bound(kernel_table, clib):
     worst = {}
     for memoir, name, r, args in kernel_table:
-        acc = kn.measure(_fn(clib[memoir], name, len(args)), r.derived, args, kn.sample_points(args, name))
+        acc = kn.measure(_fn(clib[memoir], name, len(args)), r.derived, args, kn.kernel_sample(r.derived, args, name))
         worst[name] = acc.max_scaled
     bad = {k: v for k, v in worst.items() if v > BOUND}
     assert not bad, bad
@@ -75,13 +75,13 @@ def test_every_c_kernel_within_bound(kernel_table, clib):
 
 def test_every_python_kernel_within_bound(kernel_table, pymod):
     for memoir, name, r, args in kernel_table:
-        acc = kn.measure(getattr(pymod[memoir], name), r.derived, args, kn.sample_points(args, name))
+        acc = kn.measure(getattr(pymod[memoir], name), r.derived, args, kn.kernel_sample(r.derived, args, name))
         assert acc.max_scaled <= BOUND, (name, acc)
 
 
 def test_sampling_includes_the_ends_of_the_domain(kernel_table):
-    for _, name, _, args in kernel_table:
-        pts = kn.sample_points(args, name)
+    for _, name, r, args in kernel_table:
+        pts = kn.kernel_sample(r.derived, args, name)
         for i, a in enumerate(args):
             vals = [p[i] for p in pts]
             assert min(vals) == a.lo and max(vals) == a.hi

@@ -26,7 +26,7 @@ import sympy as sp
 
 from pendsym import blade as B
 from pendsym import suspension as SU
-from pendsym import verify
+from pendsym import pipeline, verify
 from pendsym.result import Evidence, Reading, Source, Spec
 from . import ch1_model as CM
 from . import profiles as PR
@@ -131,17 +131,44 @@ def eq45(_deps) -> sp.Expr:
 
 
 # ================================================================ n°11: (46)–(52)
-def _u_of_bc(end_slope) -> sp.Expr:
-    """u = c1 v + c2 w solving (9), with u'_0 = 0 (47) and (v'' + u')_λ = d(end_slope)/dλ = 0 (48)."""
-    c1, c2, up_l = sp.symbols("c_1 c_2 u'_lambda")
-    # (48): the end slope of the varied function is a constant of (10): y''(λ) + u'(λ) = 0, y'' = y/M (9)
-    up_l_val = sp.solve(sp.Eq(end_slope / Ml + up_l, 0), up_l)[0]
-    # slopes of v, w at 0 and λ (10)
-    slope = {(v, 0): -1, (v, lam): -1, (w, 0): 0, (w, lam): 1}
-    eqs = [sp.Eq(c1 * slope[(v, 0)] + c2 * slope[(w, 0)], 0),
-           sp.Eq(c1 * slope[(v, lam)] + c2 * slope[(w, lam)], up_l_val)]
+SLOPES = {(v, 0): -1, (v, lam): -1, (w, 0): 0, (w, lam): 1}     # v', w' at s = 0 and s = λ (10)
+
+
+def end_slope_of_u(end_value) -> sp.Expr:
+    """(∂u/∂s)_λ for u = ∂y/∂λ, y = v or w (48): y'(λ; λ) is the constant of (10) for every λ, so
+    d/dλ y'_λ = (∂y'/∂s + ∂u/∂s)_λ = 0 with ∂y'/∂s = y'' = y/M (9)."""
+    up_l = sp.Symbol("u'_lambda")
+    return sp.solve(sp.Eq(end_value / Ml + up_l, 0), up_l)[0]
+
+
+def _u_of_bc(end_value) -> sp.Expr:
+    """u = c1 v + c2 w solving (9), with u'_0 = 0 (47) and u'_λ of (48)."""
+    c1, c2 = sp.symbols("c_1 c_2")
+    eqs = [sp.Eq(c1 * SLOPES[(v, 0)] + c2 * SLOPES[(w, 0)], 0),
+           sp.Eq(c1 * SLOPES[(v, lam)] + c2 * SLOPES[(w, lam)], end_slope_of_u(end_value))]
     cs = sp.solve(eqs, [c1, c2], dict=True)[0]
     return cs[c1] * v(s) + cs[c2] * w(s)
+
+
+def at_end(expr: sp.Expr, where) -> sp.Expr:
+    """expr at s = 0 or λ with the slopes of (10), the end values v0 … wλ and M(λ) = Mλ."""
+    slopes = {v(s).diff(s): SLOPES[(v, where)], w(s).diff(s): SLOPES[(w, where)]}
+    return CM.ends(expr.subs(slopes).subs(s, where)).subs(Mf(lam), Ml)
+
+
+def eq46(deps):
+    """∂u/∂s = ∂v'/∂λ (46), u = ∂v/∂λ: the s-derivative of (49)."""
+    return sp.diff(deps[rid(49, "dv_dlam")].derived, s)
+
+
+def eq47(deps):
+    """(46) at s = 0: w'_0 = 0 (10) makes it vanish."""
+    return at_end(deps[rid(46, "du_ds")].derived, 0)
+
+
+def eq48(_deps):
+    """(∂u/∂s)_λ from d/dλ v'_λ = 0 (10) and v'' = v/M (9)."""
+    return end_slope_of_u(vl)
 
 
 def eq49(_deps):
@@ -175,6 +202,36 @@ def eq52_identity(deps):
 
 # ================================================================ n°12: (53)–(57)
 t = sp.Symbol("t", real=True)
+xf = sp.Function("x")                      # the increment of v (n°12)
+
+
+def eq53(_deps):
+    """M x'' − x for (9) with M → M(1 + ε), v → v + x, to the first order in ε and x."""
+    eta = sp.Symbol("eta")
+    full = Mf(s) * (1 + eta * epsf(s)) * (v(s) + eta * xf(s)).diff(s, 2) - (v(s) + eta * xf(s))
+    first = sp.diff(full, eta).subs(eta, 0)
+    return sp.expand((Mf(s) * xf(s).diff(s, 2) - xf(s)) - first)
+
+
+def eq55(which):
+    def derive(_deps):
+        """A (or B) = ∫_0^s A' (B') with A', B' of the variation of constants for (53) (:func:`_AB`)."""
+        prime = _AB(v)[0 if which == "A" else 1]
+        return sp.Integral(prime.subs(s, t), (t, 0, s))
+    return derive
+
+
+def _homogeneous_part(Al, Bl):
+    """C of x = Av + (B + C)w: x'(λ) = A_λ v'_λ + (B_λ + C) w'_λ = 0 (A'v + B'w = 0), x'_0 = 0."""
+    C = sp.Symbol("C")
+    return sp.solve(sp.Eq(Al * SLOPES[(v, lam)] + (Bl + C) * SLOPES[(w, lam)], 0), C)[0]
+
+
+def eq54(deps):
+    """x = A v + (B + C) w (54) with A, B of (55) and C from x'(λ) = 0."""
+    A_, B_ = deps[rid(55, "A")].derived, deps[rid(55, "B")].derived
+    Al, Bl = A_.subs(s, lam), B_.subs(s, lam)
+    return A_ * v(s) + (B_ + _homogeneous_part(Al, Bl)) * w(s)
 
 
 def _AB(fn):
@@ -203,8 +260,7 @@ def _x_ends(fn):
     Ap, Bp = _AB(fn)
     Al = sp.Integral(Ap, (s, 0, lam))
     Bl = sp.Integral(Bp, (s, 0, lam))
-    # the homogeneous part C w makes x'(λ) = A_λ v'_λ + B_λ w'_λ + C = 0 → C = A_λ − B_λ
-    C = sp.solve(sp.Eq(Al * (-1) + Bl * 1 + sp.Symbol("C"), 0), sp.Symbol("C"))[0]
+    C = _homogeneous_part(Al, Bl)
     x0 = C * w0
     xl = Al * vl + (Bl + C) * wl
     return x0, xl
@@ -389,6 +445,7 @@ def blade_partials(name: str, kind: str, dps: int = DPS, at: tuple = ()) -> dict
         for fr in at:
             get[f"v@{fr}"] = lambda sol, fr=fr: sol.v(L * mp.mpf(fr))
             get[f"w@{fr}"] = lambda sol, fr=fr: sol.w(L * mp.mpf(fr))
+            get[f"v'@{fr}"] = lambda sol, fr=fr: sol.state(L * mp.mpf(fr))[1]
         return {key: stencil(lambda k: fn(shot(name, kind, k, dps)), h) for key, fn in get.items()}
 
 
@@ -644,6 +701,103 @@ def lam_check(key, fn_name=None):
     return check
 
 
+def check46(result, level):
+    """∂v'/∂λ at s = 0.3λ, 0.8λ (the λ-stencil of the shot v'(s), s fixed) against the derived
+    ∂u/∂s with the shot w'(s) and the base end values."""
+    pairs = []
+    for name in PROFILES[level]:
+        sol = shot(name)
+        bp = blade_partials(name, "lam", DPS, FRACS)
+        vals = base_values(name, "clock")
+        for fr in FRACS:
+            st = sol.state(vals["lambda"] * mp.mpf(fr))
+            WP = sp.Symbol("WP_s")
+            with mp.workdps(40):
+                pairs.append((f"{name} {fr}", evaluate(result.derived_value.subs(w(s).diff(s), WP),
+                                                       {**vals, "WP_s": st[3]}), bp[f"v'@{fr}"]))
+    conf = _confirm(lambda dps: blade_partials("uniform", "lam", dps, FRACS)[f"v'@{FRACS[0]}"])
+    return _finish("5-point stencil in λ of the shot v'(s), s = 0.3λ, 0.8λ fixed, on blades λ(1 + kH) with "
+                   "the same M(s) (pendsym.blade, 30 digits)", pairs, [], conf, level)
+
+
+def forward_stencil(f, h):
+    """[−25f(0) + 48f(1) − 36f(2) + 16f(3) − 3f(4)]/(12h): the derivative to O(h⁴) from one side."""
+    return (-25 * f(0) + 48 * f(1) - 36 * f(2) + 16 * f(3) - 3 * f(4)) / (12 * h)
+
+
+def end_partial(name: str, dps: int = DPS) -> mp.mpf:
+    """∂v'/∂λ at s = λ0, the end of the base blade: v'(λ0) on blades λ0(1 + kH), k = 0 … 4 (all
+    of them reach s = λ0), by the one-sided stencil."""
+    with mp.workdps(dps + 12):
+        L = SU.number(PR.profile(name).length)
+        return forward_stencil(lambda k: shot(name, "lam", k, dps).state(L)[1], _step(name, "lam", dps))
+
+
+def check48(result, level):
+    pairs, ppairs = [], []
+    for name in PROFILES[level]:
+        truth = end_partial(name)
+        vals = base_values(name, "clock")
+        with mp.workdps(40):
+            pairs.append((name, evaluate(result.derived_value, vals), truth))
+            ppairs.append((name, evaluate(result.printed_value, vals), truth))
+    conf = _confirm(lambda dps: end_partial("uniform", dps))
+    return _finish("one-sided 5-point stencil in λ of the shot v'(λ0) (s = λ0 fixed) on blades λ0(1 + kH), "
+                   "k = 0 … 4 (pendsym.blade, 30 digits)", pairs, ppairs, conf, level)
+
+
+def value_upto(expr: sp.Expr, vals: dict, sol, eps, s0) -> mp.mpf:
+    """expr at s = s0 on the shot ``sol``: v(s), w(s) by the shot, each ∫_0^s or ∫_0^λ by
+    Gauss–Legendre quadrature (v'' = v/M (9)), the other symbols from vals."""
+    V_, W_, M_, E_ = sp.symbols("V_ W_ M_ E_")
+
+    def body_fn(I):
+        (var, lo, hi), = I.limits
+        body = I.function.subs({v(var).diff(var, 2): v(var) / Mf(var), w(var).diff(var, 2): w(var) / Mf(var)})
+        body = body.subs({v(var): V_, w(var): W_, Mf(var): M_, epsf(var): E_})
+        syms = sorted(body.free_symbols - {V_, W_, M_, E_, var}, key=lambda x: x.name)
+        fb = verify.lambdify_mp(body, (V_, W_, M_, E_, var, *syms))
+        top = s0 if hi == s else SU.number(PR.profile(vals["_name"]).length) if hi == lam else None
+        if top is None or lo != 0:
+            raise ValueError(f"unexpected limits {I.limits}")
+        pieces = [(pa, min(pb, top), q, Mq) for pa, pb, q, Mq in sol.pieces if pa < top]
+        others = [vals[x.name] for x in syms]
+        with mp.workdps(sol.wdps):
+            return B.integrate_pieces(pieces, lambda x: (lambda st: fb(st[0], st[2], sol.M_at(x), eps(x), x, *others))(
+                sol.state(x)))
+    ints = sorted(expr.atoms(sp.Integral), key=sp.default_sort_key)
+    names = [sp.Symbol(f"_I{i}") for i in range(len(ints))]
+    ex = expr.xreplace(dict(zip(ints, names)))
+    st = sol.state(s0)
+    allv = {**vals, **{n.name: body_fn(I) for n, I in zip(names, ints)}, "_V": st[0], "_W": st[2]}
+    ex = ex.subs({v(s): sp.Symbol("_V"), w(s): sp.Symbol("_W")})
+    syms = sorted(ex.free_symbols, key=lambda x: x.name)
+    return mp.mpf(verify.lambdify_mp(ex, syms)(*[allv[x.name] for x in syms]))
+
+
+def check54(result, level):
+    """x(s) = ∂v/∂h at s = 0.3λ, 0.8λ: the h-stencil of the shot v(s) on blades M(1 + hε), against
+    (54) with A, B of (55) by quadrature on the unperturbed shot."""
+    pairs, ppairs = [], []
+    for name in PROFILES[level]:
+        sol = shot(name)
+        vals = {**base_values(name, "clock"), "_name": name}
+        for kind in ("lin", "one"):
+            if kind == "one" and name == "tapered":
+                continue
+            bp = blade_partials(name, kind, DPS, FRACS)
+            for fr in FRACS:
+                s0 = vals["lambda"] * mp.mpf(fr)
+                with mp.workdps(40):
+                    args = (vals, sol, eps_fun(name, kind), s0)
+                    pairs.append((f"{name}/ε={kind} {fr}", value_upto(result.derived_value, *args), bp[f"v@{fr}"]))
+                    ppairs.append((f"{name}/ε={kind} {fr}", value_upto(result.printed_value, *args), bp[f"v@{fr}"]))
+    conf = _confirm(lambda dps: blade_partials("uniform", "lin", dps, FRACS)[f"v@{FRACS[0]}"])
+    return _finish("5-point stencil in h of the shot v(s), s = 0.3λ, 0.8λ fixed, on blades M(s)(1 + hε(s)), "
+                   "ε = 1 + s/λ and ε = 1 (pendsym.blade); A, B by Gauss–Legendre quadrature on the shot",
+                   pairs, ppairs, conf, level)
+
+
 def eps_check(key):
     """d(key) for M → M(1 + hε), ε = 1 + s/λ and ε = 1, against the integral by quadrature on the shot blade."""
     def check(result, level):
@@ -713,6 +867,16 @@ def specs() -> tuple[Spec, ...]:
         Spec(r(49, "dv_dlam"), "∂v/∂λ", src(n11, "49"), r"\frac{\partial v}{\partial\lambda}", eq49,
              printed=lambda: -vl / Ml * w(s), check=lam_fn("v"),
              note="(46)–(48): u = ∂v/∂λ solves (9) with u'_0 = 0, u'_λ = −vλ/Mλ; M(s) given, λ varies."),
+        Spec(r(46, "du_ds"), "∂u/∂s = ∂v'/∂λ, u = ∂v/∂λ", src(n11, "46"), r"\frac{\partial u}{\partial s}", eq46,
+             deps=(r(49, "dv_dlam"),), check=check46,
+             note="(46) states ∂u/∂s = ∂v'/∂λ; the derived ∂u/∂s (the s-derivative of (49)) is checked against "
+                  "the λ-derivative of the shot v'(s), which is (46) itself in numbers."),
+        Spec(r(47, "du_ds_0"), "(∂u/∂s)_0 = dv'_0/dλ = 0", src(n11, "47"),
+             r"\left(\frac{\partial u}{\partial s}\right)_0", eq47, deps=(r(46, "du_ds"),), printed=lambda: sp.S.Zero,
+             check=proof_zero("(46) at s = 0 with w'_0 = 0 (10) is 0: v'_0 = −1 for every λ")),
+        Spec(r(48, "du_ds_l"), "(∂u/∂s)_λ = −vλ/Mλ", src(n11, "48"),
+             r"\left(\frac{\partial u}{\partial s}\right)_\lambda", eq48, printed=lambda: -vl / Ml, check=check48,
+             note="From d/dλ v'_λ = 0 (10) and v'' = v/M (9), as in the memoir."),
         Spec(r(50, "dw_dlam"), "∂w/∂λ", src(n11, "50"), r"\frac{\partial w}{\partial\lambda}", eq50,
              printed=lambda: -wl / Ml * w(s), check=lam_fn("w"), readings=(READ_VW,)),
         Spec(r(51, "dv0"), "dv0/dλ", src(n11, "51"), r"\frac{dv_0}{d\lambda}", _at0(r(49, "dv_dlam")),
@@ -728,6 +892,23 @@ def specs() -> tuple[Spec, ...]:
              deps=(r(51, "dw0"), r(52, "dvl"), r(52, "dwl")),
              check=proof_zero("dw0/dλ − dvλ/dλ − dwλ/dλ with the derived (51), (52) and w0 = vλ + wλ (16) is 0"),
              note="Holds with the derived dw0/dλ = −wλw0/Mλ; with the printed −w0²/Mλ it would need w0 = wλ."),
+        Spec(r(53, "x_ode"), "Mx'' − x = −εMv'' for the increment x of v", src(n12, "53"), "Mx'' - x", eq53,
+             printed=lambda: -epsf(s) * Mf(s) * v(s).diff(s, 2), instances=INSTANCES, check=pipeline.through(r(54, "x")),
+             note="(9) with M → M(1 + ε), v → v + x to the first order; x'_0 = x'_λ = 0 by (10)."),
+        Spec(r(55, "A"), "A = (1/w0)∫_0^s εwv'' ds", src(n12, "55"), "A", eq55("A"),
+             printed=lambda: sp.Integral(epsf(t) * w(t) * v(t).diff(t, 2), (t, 0, s)) / w0, instances=INSTANCES,
+             readings=(READ_VW,), check=pipeline.through(r(54, "x")),
+             note="Variation of constants for (53) with the Wronskian w0 (15)."),
+        Spec(r(55, "B"), "B = −(1/w0)∫_0^s εvv'' ds", src(n12, "55"), "B", eq55("B"),
+             printed=lambda: -sp.Integral(epsf(t) * v(t) * v(t).diff(t, 2), (t, 0, s)) / w0, instances=INSTANCES,
+             readings=(READ_VW,), check=pipeline.through(r(54, "x"))),
+        Spec(r(54, "x"), "x = Av + (B + Aλ − Bλ)w", src(n12, "54"), "x", eq54, deps=(r(55, "A"), r(55, "B")),
+             printed=lambda: (sp.Integral(epsf(t) * w(t) * v(t).diff(t, 2), (t, 0, s)) / w0 * v(s)
+                              + (-sp.Integral(epsf(t) * v(t) * v(t).diff(t, 2), (t, 0, s)) / w0
+                                 + sp.Integral(epsf(t) * w(t) * v(t).diff(t, 2), (t, 0, lam)) / w0
+                                 + sp.Integral(epsf(t) * v(t) * v(t).diff(t, 2), (t, 0, lam)) / w0) * w(s)),
+             instances=INSTANCES, readings=(READ_VW,), check=check54,
+             note="A_λ, B_λ are A, B at s = λ; the printed form is (54) with (55) written out."),
         Spec(r(56, "dv0"), "dv0 for M → M(1 + ε)", src(n12, "56"), "dv_0", eq56(v),
              printed=lambda: sp.Integral(epsf(s) / Mf(s) * (v(s) + w(s)) * v(s), (s, 0, lam)),
              instances=INSTANCES, readings=(READ_VW,), check=eps_check("v0"),

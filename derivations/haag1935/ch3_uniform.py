@@ -22,6 +22,8 @@ from sympy.functions.elementary.hyperbolic import HyperbolicFunction
 from pendsym import blade as B
 from pendsym import verify
 from pendsym.result import Evidence, KernelArg, KernelSpec, Reading, Source, Spec
+from pendsym.roots import quadratic_roots
+from . import ch1_model
 from .symbols import (DEFS, K, K_OF_k, E, Fn, Gam, Gn, M, R, T, U, U1, U2, Y, a, a1, b, beta1, c, e, g, k, lam,
                       mb, n, omega, s, theta, u, vl, w0, wl, x0, xl, z, zp)
 
@@ -572,6 +574,41 @@ def n2_derived(deps):
     return -deps[rid(35, "K_uniform")].derived * g / deps[rid(30, "zp_uniform")].derived
 
 
+# ---------------------------------------------------------------- the same through (36) and the stable root z
+# (35) divides a + z' − v_λ by β1: both are O(u²) as u → 0 and the difference cancels completely
+# in double; (36) has a + w_λ over a + z − v_λ, neither of which cancels for a > 0.  z is the
+# root of (30) that (31) pairs with z', each root written without cancellation (pendsym.roots).
+def _uniform_quadratic(deps) -> sp.Poly:
+    """(30) of ch1_model with v_λ, β1, w_λ of (159): coefficients rational in th(u/2), u, a, R, λ."""
+    sub = {vl: deps[rid(159, "vl")].derived, beta1: deps[rid(159, "beta1")].derived,
+           wl: deps[rid(159, "wl")].derived}
+    coeffs = []
+    for cf in ch1_model.foci_quadratic().all_coeffs():
+        num, den = sp.fraction(sp.together(cf.subs(sub)))
+        coeffs.append(sp.collect(from_tanh(in_tanh(sp.expand(num))), [a, R, lam]) /
+                      sp.collect(from_tanh(in_tanh(sp.expand(den))), [a, R, lam]))
+    return sp.Poly(coeffs, z)
+
+
+def z_derived(deps):
+    """z, the positive root of (30) for the uniform blade (n°7, n°50), in the form of pendsym.roots."""
+    plus, _minus = quadratic_roots(_uniform_quadratic(deps))
+    return plus
+
+
+def K36_derived(deps):
+    """K = (a + w_λ)/(a + z − v_λ) (36) with (159) and z of (30)."""
+    sub = {vl: deps[rid(159, "vl")].derived, wl: deps[rid(159, "wl")].derived, z: deps[rid(30, "z_uniform")].derived}
+    return ch1_model.K_of_z().subs(sub)
+
+
+def n2_z_derived(deps):
+    """n² = −Kg/z' (34) with z' = −R²/z (31) and K of (36): n² = Kgz/R²."""
+    prod, _total = ch1_model.vieta()                     # z z' = −R² (31)
+    n2_ = -K * g / zp
+    return n2_.subs(zp, prod / z).subs({K: deps[rid(36, "K_uniform")].derived, z: deps[rid(30, "z_uniform")].derived})
+
+
 # ================================================================ independent truth: the numerical blade
 LAM = sp.Rational(13, 10)
 U_VALUES = {"quick": ("7/10", "43/10"), "full": ("7/10", "43/10", "13")}
@@ -918,7 +955,7 @@ DYN = {"a": "0.9", "R": "0.35", "g": "9.81"}
 def _dyn_check(what):
     def truth(sol, pt):
         z_, zp_, n2, Kv = _modes(sol, mp.mpf(pt["a"]), mp.mpf(pt["R"]), mp.mpf(pt["g"]))
-        return {"zp": zp_, "K": Kv, "n2": n2, "k": Kv * (1 - Kv)}[what]
+        return {"z": z_, "zp": zp_, "K": Kv, "n2": n2, "k": Kv * (1 - Kv)}[what]
 
     def subs(sol, pt):
         if what != "k":
@@ -1088,6 +1125,18 @@ def kern(doc, *args, unit="1"):
     return KernelSpec(args=tuple(args), doc=doc + " " + CANCEL, unit=unit, naive_defs=NAIVE)
 
 
+# K and n² of the suspension: a the distance from the blade's end to the centre of mass, R the
+# radius of gyration, λ and u of the blade (a > 0: the direct pendulum, where K > 0 (n°9)).
+A_ARG = KernelArg("a", 1e-2, 5.0, log=True, unit="m")
+R_ARG = KernelArg("R", 1e-3, 2.0, log=True, unit="m")
+G_ARG = KernelArg("g", 9.7, 9.9, log=False, unit="m/s^2")
+
+
+def dyn_kern(doc, *extra, unit):
+    return KernelSpec(args=(A_ARG, R_ARG, LAM_ARG, U_ARG, *extra), doc=doc + " " + CANCEL, unit=unit,
+                      naive_defs=NAIVE)
+
+
 # ================================================================ the Specs
 def specs() -> tuple[Spec, ...]:
     D_ = DEFS
@@ -1254,6 +1303,17 @@ def specs() -> tuple[Spec, ...]:
              deps=(rid(30, "zp_uniform"), rid(159, "vl"), rid(159, "beta1")), check=_dyn_check("K"), defs=D_),
         Spec(rid(34, "n2_uniform"), "n² = −Kg/z' for the uniform blade", src("n°50", "34"), "n^2", n2_derived,
              deps=(rid(35, "K_uniform"), rid(30, "zp_uniform")), check=_dyn_check("n2"), defs=D_),
+        Spec(rid(30, "z_uniform"), "z (positive root of (30)) for the uniform blade, without cancellation",
+             src("n°50", "30"), "z", z_derived, deps=(rid(159, "vl"), rid(159, "beta1"), rid(159, "wl")),
+             check=_dyn_check("z"), defs=D_),
+        Spec(rid(36, "K_uniform"), "K of (36) for the uniform blade", src("n°50", "36"), "K", K36_derived,
+             deps=(rid(30, "z_uniform"), rid(159, "vl"), rid(159, "wl")), check=_dyn_check("K"), defs=D_,
+             kernel=dyn_kern("K of (36) for given a, R, λ, u: (a + w_λ)/(a + z − v_λ), z the root of (30) "
+                             "written without cancellation.", unit="1")),
+        Spec(rid(34, "n2_z_uniform"), "n² = Kgz/R² ((34) with (31)) for the uniform blade, K of (36)",
+             src("n°50", "34"), "n^2", n2_z_derived, deps=(rid(36, "K_uniform"), rid(30, "z_uniform")),
+             check=_dyn_check("n2"), defs=D_,
+             kernel=dyn_kern("n² = Kgz/R² for given a, R, λ, u, g, with K of (36).", G_ARG, unit="1/s^2")),
         Spec(rid(171, "shape"), "Shape of the blade ωy", src("n°50", "171"), r"\omega y", shape_derived,
              deps=(rid(157, "v"), rid(157, "w")),
              printed=lambda: Y * (omega * s - sp.sinh(omega * s) + c * (sp.cosh(omega * s) - 1)),
