@@ -66,3 +66,37 @@ def test_checks_pass(built, rid):
         assert ev.printed_agrees is False
     elif rid in ("haag1935.eq044.dT", "haag1935.eq058.dT", "haag1935.eq063.G"):
         assert ev.printed_agrees is True
+
+
+@pytest.mark.parametrize("rid, status", [
+    ("haag1935.eq046.du_ds", "derived-only"),
+    ("haag1935.eq047.du_ds_0", "match"),
+    ("haag1935.eq048.du_ds_l", "match"),
+    ("haag1935.eq053.x_ode", "match"),
+    ("haag1935.eq054.x", "match"),
+    ("haag1935.eq055.A", "match"),
+    ("haag1935.eq055.B", "match"),
+])
+def test_steps_46_to_55(built, rid, status):
+    assert pipeline.compare(built[rid])[0] == status
+
+
+def test_one_sided_stencil_order():
+    """The forward 5-point stencil is exact on quartics and fails on a quintic."""
+    import mpmath as mp
+    assert abs(V.forward_stencil(lambda k: (k * mp.mpf(1)) ** 4 - 2 * k, 1) + 2) < 1e-30
+    assert abs(V.forward_stencil(lambda k: (k * mp.mpf(1)) ** 5, 1)) > 1
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("rid, wrong", [
+    # (48) with the sign of v'' = v/M reversed, (54) with the homogeneous part C = A_λ + B_λ
+    ("haag1935.eq048.du_ds_l", lambda r: -r.derived),
+    ("haag1935.eq054.x", lambda r: r.derived + 2 * r.deps["haag1935.eq055.B"].derived.subs(V.s, V.lam) * V.w(V.s)),
+])
+def test_the_new_checks_pass_and_reject_a_wrong_formula(built, rid, wrong):
+    import dataclasses
+    r = built[rid]
+    assert pipeline.check(r, "quick").passed
+    bad = dataclasses.replace(r, derived=wrong(r))
+    assert not pipeline.check(bad, "quick").passed
