@@ -482,21 +482,35 @@ def direction_values(name: str, pname: str, kind: str, dps: int = DPS) -> dict:
     return {**base, **d}
 
 
-def evaluate(expr: sp.Expr, vals: dict, sol=None, eps=None) -> mp.mpf:
-    """expr at vals (symbol name → mpf); integrals ∫f(v, w, M, ε) ds by quadrature on the shot ``sol``."""
+def evaluate(expr: sp.Expr, vals: dict, sol=None, eps=None, at=None) -> mp.mpf:
+    """expr at vals (symbol name → mpf); each ∫_0^λ f(v, w, M, ε) ds, or ∫_0^s with s = ``at``, by
+    quadrature on the shot ``sol`` (v'' = v/M (9)); v(s), w(s) outside the integrals are the
+    shot's at s = ``at``."""
     V_, W_, M_, E_ = sp.symbols("V_ W_ M_ E_")
 
     def integral(I):
-        body = I.function.subs({v(s): V_, w(s): W_, Mf(s): M_, epsf(s): E_})
-        syms = sorted(body.free_symbols - {V_, W_, M_, E_, s}, key=lambda x: x.name)
-        fb = verify.lambdify_mp(body, (V_, W_, M_, E_, s, *syms))
+        (var, lo, hi), = I.limits
+        body = I.function.subs({v(var).diff(var, 2): v(var) / Mf(var), w(var).diff(var, 2): w(var) / Mf(var)})
+        body = body.subs({v(var): V_, w(var): W_, Mf(var): M_, epsf(var): E_})
+        syms = sorted(body.free_symbols - {V_, W_, M_, E_, var}, key=lambda x: x.name)
+        fb = verify.lambdify_mp(body, (V_, W_, M_, E_, var, *syms))
         others = [vals[x.name] for x in syms]
         ef = eps or (lambda x: 0)
-        return sol.integrate(lambda x: (lambda st: fb(st[0], st[2], sol.M_at(x), ef(x), x, *others))(sol.state(x)))
+        f = lambda x: (lambda st: fb(st[0], st[2], sol.M_at(x), ef(x), x, *others))(sol.state(x))
+        if lo == 0 and hi == lam:
+            return sol.integrate(f)
+        if lo == 0 and hi == s and at is not None:
+            with mp.workdps(sol.wdps):
+                return B.integrate_pieces([(pa, min(pb, at), q, Mq) for pa, pb, q, Mq in sol.pieces if pa < at], f)
+        raise ValueError(f"evaluate: integral over {I.limits} not supported")
     ints = list(expr.atoms(sp.Integral))
     names = [sp.Symbol(f"_I{i}") for i in range(len(ints))]
     expr = expr.xreplace(dict(zip(ints, names)))
     extra = {n.name: integral(I) for n, I in zip(names, ints)}
+    if at is not None:
+        st = sol.state(at)
+        expr = expr.subs({v(s): sp.Symbol("_V"), w(s): sp.Symbol("_W")})
+        extra.update({"_V": st[0], "_W": st[2]})
     allv = {**vals, **extra}
     syms = sorted(expr.free_symbols, key=lambda x: x.name)
     return mp.mpf(verify.lambdify_mp(expr, syms)(*[allv[x.name] for x in syms]))
@@ -746,42 +760,13 @@ def check48(result, level):
                    "k = 0 … 4 (pendsym.blade, 30 digits)", pairs, ppairs, conf, level)
 
 
-def value_upto(expr: sp.Expr, vals: dict, sol, eps, s0) -> mp.mpf:
-    """expr at s = s0 on the shot ``sol``: v(s), w(s) by the shot, each ∫_0^s or ∫_0^λ by
-    Gauss–Legendre quadrature (v'' = v/M (9)), the other symbols from vals."""
-    V_, W_, M_, E_ = sp.symbols("V_ W_ M_ E_")
-
-    def body_fn(I):
-        (var, lo, hi), = I.limits
-        body = I.function.subs({v(var).diff(var, 2): v(var) / Mf(var), w(var).diff(var, 2): w(var) / Mf(var)})
-        body = body.subs({v(var): V_, w(var): W_, Mf(var): M_, epsf(var): E_})
-        syms = sorted(body.free_symbols - {V_, W_, M_, E_, var}, key=lambda x: x.name)
-        fb = verify.lambdify_mp(body, (V_, W_, M_, E_, var, *syms))
-        top = s0 if hi == s else SU.number(PR.profile(vals["_name"]).length) if hi == lam else None
-        if top is None or lo != 0:
-            raise ValueError(f"unexpected limits {I.limits}")
-        pieces = [(pa, min(pb, top), q, Mq) for pa, pb, q, Mq in sol.pieces if pa < top]
-        others = [vals[x.name] for x in syms]
-        with mp.workdps(sol.wdps):
-            return B.integrate_pieces(pieces, lambda x: (lambda st: fb(st[0], st[2], sol.M_at(x), eps(x), x, *others))(
-                sol.state(x)))
-    ints = sorted(expr.atoms(sp.Integral), key=sp.default_sort_key)
-    names = [sp.Symbol(f"_I{i}") for i in range(len(ints))]
-    ex = expr.xreplace(dict(zip(ints, names)))
-    st = sol.state(s0)
-    allv = {**vals, **{n.name: body_fn(I) for n, I in zip(names, ints)}, "_V": st[0], "_W": st[2]}
-    ex = ex.subs({v(s): sp.Symbol("_V"), w(s): sp.Symbol("_W")})
-    syms = sorted(ex.free_symbols, key=lambda x: x.name)
-    return mp.mpf(verify.lambdify_mp(ex, syms)(*[allv[x.name] for x in syms]))
-
-
 def check54(result, level):
     """x(s) = ∂v/∂h at s = 0.3λ, 0.8λ: the h-stencil of the shot v(s) on blades M(1 + hε), against
     (54) with A, B of (55) by quadrature on the unperturbed shot."""
     pairs, ppairs = [], []
     for name in PROFILES[level]:
         sol = shot(name)
-        vals = {**base_values(name, "clock"), "_name": name}
+        vals = base_values(name, "clock")
         for kind in ("lin", "one"):
             if kind == "one" and name == "tapered":
                 continue
@@ -789,9 +774,9 @@ def check54(result, level):
             for fr in FRACS:
                 s0 = vals["lambda"] * mp.mpf(fr)
                 with mp.workdps(40):
-                    args = (vals, sol, eps_fun(name, kind), s0)
-                    pairs.append((f"{name}/ε={kind} {fr}", value_upto(result.derived_value, *args), bp[f"v@{fr}"]))
-                    ppairs.append((f"{name}/ε={kind} {fr}", value_upto(result.printed_value, *args), bp[f"v@{fr}"]))
+                    ef, lab = eps_fun(name, kind), f"{name}/ε={kind} {fr}"
+                    pairs.append((lab, evaluate(result.derived_value, vals, sol, ef, at=s0), bp[f"v@{fr}"]))
+                    ppairs.append((lab, evaluate(result.printed_value, vals, sol, ef, at=s0), bp[f"v@{fr}"]))
     conf = _confirm(lambda dps: blade_partials("uniform", "lin", dps, FRACS)[f"v@{FRACS[0]}"])
     return _finish("5-point stencil in h of the shot v(s), s = 0.3λ, 0.8λ fixed, on blades M(s)(1 + hε(s)), "
                    "ε = 1 + s/λ and ε = 1 (pendsym.blade); A, B by Gauss–Legendre quadrature on the shot",

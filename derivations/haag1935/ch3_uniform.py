@@ -1103,10 +1103,9 @@ LAUNCH_PRINTED = {
 # The printed forms cancel as u → 0 (1/u² − U1², u − 2 th(u/2) …): the naive kernels lose
 # up to 1e24 ulp there.  pendsym.emit.kernels generates piecewise stable forms (series in u,
 # a middle Taylor piece, e^{−u}/expm1 forms) and measures them; pendsym.derive withholds any
-# kernel over 4 ulp × max(1, κ) (listed in the report with its figures).  K and n² are not
-# declared as kernels: their form through the root z' of (30) loses everything at small a, λ,
-# u (a cancellation outside the u-only leaves); a form through (36) and the stable root z is
-# the next step (noted on issue 3).
+# kernel over 4 ulp × max(1, κ) (listed in the report with its figures).  K and n² are
+# emitted from (36) with the stable root z of (30): through (35) and z' they lose everything
+# as u → 0 (a + z' − vλ and β1 are both O(u²)).
 KERNELS_READY = True
 U_ARG = KernelArg("u", 1e-6, 700.0, log=True)
 LAM_ARG = KernelArg("lambda", 1e-3, 10.0, log=True, unit="m")
@@ -1130,11 +1129,6 @@ def kern(doc, *args, unit="1"):
 A_ARG = KernelArg("a", 1e-2, 5.0, log=True, unit="m")
 R_ARG = KernelArg("R", 1e-3, 2.0, log=True, unit="m")
 G_ARG = KernelArg("g", 9.7, 9.9, log=False, unit="m/s^2")
-
-
-def dyn_kern(doc, *extra, unit):
-    return KernelSpec(args=(A_ARG, R_ARG, LAM_ARG, U_ARG, *extra), doc=doc + " " + CANCEL, unit=unit,
-                      naive_defs=NAIVE)
 
 
 # ================================================================ the Specs
@@ -1308,12 +1302,13 @@ def specs() -> tuple[Spec, ...]:
              check=_dyn_check("z"), defs=D_),
         Spec(rid(36, "K_uniform"), "K of (36) for the uniform blade", src("n°50", "36"), "K", K36_derived,
              deps=(rid(30, "z_uniform"), rid(159, "vl"), rid(159, "wl")), check=_dyn_check("K"), defs=D_,
-             kernel=dyn_kern("K of (36) for given a, R, λ, u: (a + w_λ)/(a + z − v_λ), z the root of (30) "
-                             "written without cancellation.", unit="1")),
+             kernel=kern("K of (36) for given a, R, λ, u: (a + w_λ)/(a + z − v_λ), z the root of (30) "
+                         "written without cancellation.", A_ARG, R_ARG, LAM_ARG, U_ARG)),
         Spec(rid(34, "n2_z_uniform"), "n² = Kgz/R² ((34) with (31)) for the uniform blade, K of (36)",
              src("n°50", "34"), "n^2", n2_z_derived, deps=(rid(36, "K_uniform"), rid(30, "z_uniform")),
              check=_dyn_check("n2"), defs=D_,
-             kernel=dyn_kern("n² = Kgz/R² for given a, R, λ, u, g, with K of (36).", G_ARG, unit="1/s^2")),
+             kernel=kern("n² = Kgz/R² for given a, R, λ, u, g, with K of (36).", A_ARG, R_ARG, LAM_ARG, U_ARG,
+                         G_ARG, unit="1/s^2")),
         Spec(rid(171, "shape"), "Shape of the blade ωy", src("n°50", "171"), r"\omega y", shape_derived,
              deps=(rid(157, "v"), rid(157, "w")),
              printed=lambda: Y * (omega * s - sp.sinh(omega * s) + c * (sp.cosh(omega * s) - 1)),

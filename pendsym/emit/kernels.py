@@ -380,7 +380,6 @@ class LeafForm:
     expr: sp.Expr
     desc: str            # how it is evaluated, for the docstring
     max_ulp: float       # measured on the leaf grid
-    switch: float | None
 
 
 def leaf_form(c: sp.Expr, x: sp.Symbol, a: KernelArg) -> LeafForm:
@@ -394,10 +393,13 @@ def leaf_form(c: sp.Expr, x: sp.Symbol, a: KernelArg) -> LeafForm:
         ref = sp.lambdify([x], c, modules="mpmath")
         truth = [ref(mp.mpf(v)) for v in xs]
 
-        def errors(form, lo=-math.inf, hi=math.inf):
+        def errors(fn, lo=-math.inf, hi=math.inf):
+            """{grid index: ulp error} of the double function fn on the grid points in [lo, hi)."""
             idx = [i for i, v in enumerate(xs) if lo <= v < hi]
-            fn = sp.lambdify([x], form, modules="math")
             return dict(zip(idx, _ulp_errors(fn, [xs[i] for i in idx], [truth[i] for i in idx])))
+
+        def in_double(form):
+            return sp.lambdify([x], form, modules="math")
         fars = [("as derived", c)]
         ef = exp_form(c, x)
         if ef is not None:
@@ -405,34 +407,33 @@ def leaf_form(c: sp.Expr, x: sp.Symbol, a: KernelArg) -> LeafForm:
         af = asymptotic_form(c, x)
         if af is not None:
             fars.append((f"limit in 1/{a.name} plus e^{{-{a.name}}} remainder", af))
-        far_err = {name: errors(f) for name, f in fars}
+        far_err = {name: errors(in_double(f)) for name, f in fars}
         lau = laurent(c, x)
         m = lau[0] if lau else 0
         head = series_expr(lau[0], lau[1], x) if lau else None
-        head_err = errors(head, hi=max(inside)) if lau and inside else {}
+        head_err = errors(in_double(head), hi=max(inside)) if lau and inside else {}
+        below = {s1: max(v for i, v in head_err.items() if xs[i] < s1) for s1 in (inside if lau else ())}
+        ser_desc = {s1: f"series (x^{m}·{SERIES_SPAN + 1} terms) for {a.name} < {s1:g}" for s1 in below}
         knots = [k for k in KNOTS if k < a.hi]
         pieces: dict = {}
 
         def piece(lo, hi):
             if (lo, hi) not in pieces:
                 c0, cs = taylor_coeffs(ref, m, lo, hi)
-                idx = [i for i, v in enumerate(xs) if lo <= v < hi]
-                errs = _ulp_errors(_taylor_double(c0, cs, m), [xs[i] for i in idx], [truth[i] for i in idx])
-                pieces[lo, hi] = (taylor_expr(c0, cs, m, x), dict(zip(idx, errs)))
+                pieces[lo, hi] = (taylor_expr(c0, cs, m, x), errors(_taylor_double(c0, cs, m), lo, hi))
             return pieces[lo, hi]
-        cands = []     # (error, number of pieces, order, form, description, switch)
+        cands = []     # (error, number of pieces, order, form, description)
         for fname, far in fars:
             fe = far_err[fname]
-            cands.append((max(fe.values()), 1, len(cands), far, fname, None))
-            for s1 in (inside if lau else ()):
-                err = max(max(v for i, v in head_err.items() if xs[i] < s1), max(v for i, v in fe.items() if xs[i] >= s1))
+            cands.append((max(fe.values()), 1, len(cands), far, fname))
+            for s1 in below:
+                err = max(below[s1], max(v for i, v in fe.items() if xs[i] >= s1))
                 cands.append((err, 2, len(cands), sp.Piecewise((head, x < s1), (far, True)),
-                              f"series (x^{m}·{SERIES_SPAN + 1} terms) for {a.name} < {s1:g}, {fname} above", s1))
-        for fname, far in (fars if lau and min(cd[0] for cd in cands) > GOOD_ENOUGH else ()):
+                              f"{ser_desc[s1]}, {fname} above"))
+        for fname, far in (fars if below and min(cd[0] for cd in cands) > GOOD_ENOUGH else ()):
             fe = far_err[fname]
-            for s1 in inside:
-                ser_desc = f"series (x^{m}·{SERIES_SPAN + 1} terms) for {a.name} < {s1:g}"
-                ends, mids, worst = [s1], [], max(v for i, v in head_err.items() if xs[i] < s1)
+            for s1 in below:
+                ends, mids, worst = [s1], [], below[s1]
                 for k in knots:
                     form, pe = piece(ends[-1], k)
                     ends.append(k)
@@ -443,12 +444,12 @@ def leaf_form(c: sp.Expr, x: sp.Symbol, a: KernelArg) -> LeafForm:
                     spans = ", ".join(f"[{lo:g}, {hi:g}]" for lo, hi in zip(ends, ends[1:]))
                     pw = sp.Piecewise((head, x < s1), *[(f, x < e) for f, e in zip(mids, ends[1:])], (far, True))
                     cands.append((err, 2 + len(mids), len(cands), pw,
-                                  f"{ser_desc}, Taylor ({MID_TERMS} terms) on {spans}, {fname} above", s1))
+                                  f"{ser_desc[s1]}, Taylor ({MID_TERMS} terms) on {spans}, {fname} above"))
                     if above <= worst:      # a further piece cannot lower the error
                         break
     least = min(e for e, *_ in cands)
-    err, _, _, form, desc, sw = min((cd for cd in cands if cd[0] <= least + 0.25), key=lambda cd: cd[1:3])
-    return LeafForm(form, desc, round(err, 2), sw)
+    err, _, _, form, desc = min((cd for cd in cands if cd[0] <= least + 0.25), key=lambda cd: cd[1:3])
+    return LeafForm(form, desc, round(err, 2))
 
 
 class Grouped(sp.Function):
@@ -495,14 +496,24 @@ def vertex_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | None:
 
 
 @functools.lru_cache(maxsize=256)
-def vertex_curve(expr: sp.Expr, args: tuple[KernelArg, ...]) -> tuple[str, str, Callable] | None:
-    """(hard argument, K, c): where the kernel's skeleton is quadratic in K, the vertex K = c(x)
-    as a function of the hard argument x (mpmath), for sampling; or None."""
+def hard_split(expr: sp.Expr, args: tuple[KernelArg, ...]) -> tuple | None:
+    """(hard argument, its symbol, skeleton, leaves) of :func:`split_hard`, or None without a
+    hard argument (the leaves' dict is shared: not to be modified)."""
     a = hard_argument(expr, args)
     if a is None:
         return None
     x = next(s for s in expr.free_symbols if s.name == a.name)
-    skeleton, leaves = split_hard(expr, x)
+    return (a, x, *split_hard(expr, x))
+
+
+@functools.lru_cache(maxsize=256)
+def vertex_curve(expr: sp.Expr, args: tuple[KernelArg, ...]) -> tuple[str, str, Callable] | None:
+    """(hard argument, K, c): where the kernel's skeleton is quadratic in K, the vertex K = c(x)
+    as a function of the hard argument x (mpmath), for sampling; or None."""
+    split = hard_split(expr, args)
+    if split is None:
+        return None
+    a, x, skeleton, leaves = split
     vx = _vertex(skeleton, leaves)
     if vx is None:
         return None
@@ -515,11 +526,10 @@ def stable_forms(expr: sp.Expr, args: Sequence[KernelArg],
     piecewise form (each one :class:`Grouped`); and, with `vertex`, when the skeleton is a
     quadratic in one argument, the same in vertex form (:func:`vertex_form`).  Empty without a
     hard argument."""
-    a = hard_argument(expr, args)
-    if a is None:
+    split = hard_split(expr, tuple(args))
+    if split is None:
         return []
-    x = next(s for s in expr.free_symbols if s.name == a.name)
-    skeleton, leaves = split_hard(expr, x)
+    a, x, skeleton, leaves = split
     variants = [("", skeleton, leaves)]
     vx = vertex_form(skeleton, leaves) if vertex else None
     if vx is not None:
@@ -604,26 +614,23 @@ def _always_evaluated(expr: sp.Basic, kind) -> set:
 
 def _plan_of(expr: sp.Expr, names) -> tuple:
     steps: list = []
-    leaves = sorted(_always_evaluated(expr, Grouped), key=sp.default_sort_key)
-    for g in leaves:
-        sym = next(names)
-        steps.append(_assign(g.args[0], sym, names))
-    expr = expr.xreplace({g: sym for g, (_, sym, _) in zip(leaves, steps)})
-    outer = sorted(_always_evaluated(expr, sp.Piecewise), key=sp.default_sort_key)
-    for pw in outer:
-        sym = next(names)
-        steps.append(_assign(pw, sym, names))
-        expr = expr.xreplace({pw: sym})
+    for kind in (Grouped, sp.Piecewise):           # the leaves first: a Piecewise may compare them
+        named = {}
+        for e in sorted(_always_evaluated(expr, kind), key=sp.default_sort_key):
+            named[e] = next(names)
+            steps += _assign(e.args[0] if kind is Grouped else e, named[e], names)
+        expr = expr.xreplace(named)
     subs, (red,) = sp.cse([expr], symbols=names)
     steps += [("let", x, v) for x, v in subs]
     return tuple(steps), red
 
 
-def _assign(value: sp.Expr, sym: sp.Symbol, names) -> tuple:
+def _assign(value: sp.Expr, sym: sp.Symbol, names) -> list:
+    """The steps that give sym its value: an if-chain for a Piecewise, else its own plan."""
     if isinstance(value, sp.Piecewise):
-        return ("if", sym, tuple((cond, *_plan_of(branch, names)) for branch, cond in value.args))
+        return [("if", sym, tuple((cond, *_plan_of(branch, names)) for branch, cond in value.args))]
     plan, red = _plan_of(value, names)
-    return ("block", sym, ((sp.true, plan, red),)) if plan else ("let", sym, red)
+    return [*plan, ("let", sym, red)]
 
 
 def _lines(plan: tuple, printer, lang: str, indent: str = "") -> list[str]:
@@ -640,11 +647,9 @@ def _lines(plan: tuple, printer, lang: str, indent: str = "") -> list[str]:
             last = i == len(data) - 1
             c = printer.doprint(cond)
             if lang == "c":
-                head = ("{" if cond == sp.true and i == 0 else f"if ({c}) {{" if i == 0
-                        else "} else {" if last and cond == sp.true else f"}} else if ({c}) {{")
+                head = f"if ({c}) {{" if i == 0 else "} else {" if last and cond == sp.true else f"}} else if ({c}) {{"
             else:
-                head = ("if True:" if cond == sp.true and i == 0 else f"if {c}:" if i == 0
-                        else "else:" if last and cond == sp.true else f"elif {c}:")
+                head = f"if {c}:" if i == 0 else "else:" if last and cond == sp.true else f"elif {c}:"
             out.append(indent + head)
             out += _lines(sub, printer, lang, indent + "    ")
             out.append(f"{indent}    {name} = {printer.doprint(red)}" + (";" if lang == "c" else ""))
@@ -758,17 +763,19 @@ def closed_form(expr: sp.Expr) -> bool:
     return not expr.has(sp.Integral) and not expr.atoms(AppliedUndef) and expr.free_symbols != set()
 
 
+def _draw(a: KernelArg, rng: random.Random) -> float:
+    """A seeded point of one argument's domain: log-uniform for a geometric one, else uniform."""
+    if a.log and a.lo > 0:
+        return math.exp(rng.uniform(math.log(a.lo), math.log(a.hi)))
+    return rng.uniform(a.lo, a.hi)
+
+
 def sample_points(args: Sequence[KernelArg], seed: str, n: int = 160, hard: bool = True,
                   pieces: str | None = None) -> list[tuple[float, ...]]:
     """Seeded points of the domain: its corners, hard points near 0, and random interior points;
     with `hard`, also every decade of a geometric argument, and every switch and knot of the
     stable forms for the argument named `pieces` (:func:`_hard_points`)."""
     rng = random.Random(seed)
-
-    def draw(a: KernelArg) -> float:
-        if a.log and a.lo > 0:
-            return math.exp(rng.uniform(math.log(a.lo), math.log(a.hi)))
-        return rng.uniform(a.lo, a.hi)
 
     def special(a: KernelArg) -> list[float]:
         vals = [a.lo, a.hi]
@@ -783,7 +790,7 @@ def sample_points(args: Sequence[KernelArg], seed: str, n: int = 160, hard: bool
             p.append(c[idx % len(c)])
             idx //= len(c)
         pts.append(tuple(p))
-    pts += [tuple(draw(a) for a in args) for _ in range(n)]
+    pts += [tuple(_draw(a, rng) for a in args) for _ in range(n)]
     if hard:
         pts += _hard_points(args, random.Random(seed + ":hard"), pieces)
     return sorted(set(pts), key=pts.index)
@@ -793,10 +800,6 @@ def _hard_points(args: Sequence[KernelArg], rng: random.Random, pieces: str | No
     """For each geometric argument: its ends and their neighbours and every decade; for the
     argument `pieces`, also every candidate switch and knot of the stable forms (SWITCHES,
     KNOTS) with the doubles just below and above it; the other arguments drawn at random."""
-    def draw(a: KernelArg) -> float:
-        if a.log and a.lo > 0:
-            return math.exp(rng.uniform(math.log(a.lo), math.log(a.hi)))
-        return rng.uniform(a.lo, a.hi)
     out = []
     for i, a in enumerate(args):
         if not (a.log and a.lo > 0):
@@ -807,7 +810,7 @@ def _hard_points(args: Sequence[KernelArg], rng: random.Random, pieces: str | No
             vals += [v for s in SWITCHES + KNOTS if a.lo < s < a.hi
                      for v in (math.nextafter(s, 0.0), s, math.nextafter(s, math.inf))]
         for v in vals:
-            p = [draw(b) for b in args]
+            p = [_draw(b, rng) for b in args]
             p[i] = v
             out.append(tuple(p))
     return out
@@ -842,8 +845,7 @@ def vertex_points(expr: sp.Expr, args: tuple[KernelArg, ...], seed: str) -> list
     ix, ik = [a.name for a in args].index(xname), [a.name for a in args].index(kname)
     out = []
     for _ in range(VERTEX_POINTS):
-        p = [math.exp(rng.uniform(math.log(a.lo), math.log(a.hi))) if a.log and a.lo > 0
-             else rng.uniform(a.lo, a.hi) for a in args]
+        p = [_draw(a, rng) for a in args]
         with mp.workdps(LEAF_DPS):       # c cancels like the leaves do as x → 0
             try:
                 kv = float(c(mp.mpf(p[ix])))
@@ -1005,8 +1007,9 @@ def choose_form(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> tuple[st
                 best = (vname, v, acc, ())
     full = kernel_sample(expr, args, seed)
     # decided on the full sample: the hard points of the stable pieces are there
-    if best[2].max_scaled > BOUND or measure(py_callable(best[1], args), expr, args, full).max_scaled > BOUND:
-        best = (best[0], best[1], measure(py_callable(best[1], args), expr, args, full), best[3])
+    on_full = measure(py_callable(best[1], args), expr, args, full)
+    if best[2].max_scaled > BOUND or on_full.max_scaled > BOUND:
+        best = (best[0], best[1], on_full, best[3])
         # the vertex form competes where the vertex lies inside the domain
         for label, form, notes in stable_forms(expr, args, vertex=bool(vertex_points(expr, tuple(args), seed))):
             acc = measure(py_callable(form, args), expr, args, full)
