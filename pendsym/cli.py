@@ -50,8 +50,8 @@ def _parser() -> Parser:
 def cmd_list(args) -> int:
     memoirs = None
     if args.memoir:
-        if args.memoir not in registry.MEMOIRS:
-            raise UsageError(f"unknown memoir: {args.memoir} (known: {', '.join(registry.MEMOIRS)})")
+        if args.memoir not in registry.memoirs():
+            raise UsageError(f"unknown memoir: {args.memoir} (known: {', '.join(registry.memoirs())})")
         memoirs = [args.memoir]
     specs = registry.all_specs(memoirs)
     known = {}

@@ -17,20 +17,15 @@ from .io import write_atomic
 from .result import Result
 
 
-def _module(memoir: str):
-    """The memoir's derivations package (its TITLE, SECTIONS, KERNELS_READY, AFFINITY)."""
-    return importlib.import_module(registry.MEMOIRS[memoir])
-
-
 def memoir_meta(memoir: str):
-    mod = _module(memoir)
-    return getattr(mod, "TITLE", memoir), getattr(mod, "SECTIONS", ())
+    m = registry.memoir(memoir)
+    return m.title, tuple((h.ids, h.title) for h in m.report_headings())
 
 
 def kernel_ids(memoir: str, results) -> list[str]:
     """The Results of a memoir that ask for a kernel and have a closed form (none if the memoir
     says its kernels are not ready)."""
-    if not getattr(_module(memoir), "KERNELS_READY", True):
+    if not registry.memoir(memoir).kernels:
         return []
     return [i for i, r in results.items() if r.spec.kernel is not None and kn.closed_form(r.derived)]
 
@@ -92,7 +87,8 @@ def _assemble(memoir: str, forms: dict) -> dict:
 def build_all() -> dict[str, dict]:
     """Every memoir built; with two cores, BUILD_IN_PARENT is built here (its caches stay warm for
     the forked checks) while a forked process builds the others and sends back their forms."""
-    memoirs = list(registry.MEMOIRS)
+    memoirs = list(registry.memoirs())
+    BUILD_IN_PARENT = max(memoirs, key=lambda m: len(registry.memoir(m).specs))
     others = [m for m in memoirs if m != BUILD_IN_PARENT]
     if (parallel.workers() < 2 or BUILD_IN_PARENT not in memoirs
             or "fork" not in multiprocessing.get_all_start_methods()):
@@ -106,8 +102,9 @@ def build_all() -> dict[str, dict]:
     return {m: built[m] for m in memoirs}
 
 
-# The memoir with the longest build (and whose checks reuse its derivation caches most).
-BUILD_IN_PARENT = "haag1935"
+def _package(memoir: str) -> str:
+    """The package of a memoir's derivations (whose source its cache keys cover)."""
+    return registry.memoir(memoir).sections[0].module.rsplit(".", 1)[0]
 
 
 def _job(jobs):
@@ -124,7 +121,7 @@ def _job(jobs):
 
 def affinity(memoir: str) -> tuple[tuple[str, ...], ...]:
     """Groups of Results whose checks are best run in one worker (a scheduling hint only)."""
-    return getattr(_module(memoir), "AFFINITY", ())
+    return registry.memoir(memoir).affinity
 
 
 def check_jobs(memoir: str, results, level: str) -> dict[str, list]:
@@ -143,7 +140,7 @@ def check_jobs(memoir: str, results, level: str) -> dict[str, list]:
 def cached_kernel(result) -> kn.Kernel | None:
     """kn.kernel_of, cached under the content hash of the Result and the code."""
     key = cache.key("kernel", result.id, sp.srepr(result.derived), repr(result.spec.kernel),
-                    packages=("pendsym", registry.MEMOIRS[result.spec.memoir]))
+                    packages=("pendsym", _package(result.spec.memoir)))
     return cache.memo(key, lambda: kn.kernel_of(result))
 
 
@@ -153,13 +150,13 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
     all_records, all_kernels = [], {}
     start = time.monotonic()
     built = build_all()
-    for memoir in registry.MEMOIRS:
+    for memoir in registry.memoirs():
         log(f"{memoir}: {len(built[memoir])} results built")
     log(f"built in {time.monotonic() - start:.0f} s")
     # one pass over the cores for every check and every kernel form, the longest first so that
     # short ones fill the tail; each result is deterministic, so the order changes nothing
-    order = sorted(registry.MEMOIRS, key=lambda m: SCHEDULE.index(m) if m in SCHEDULE else len(SCHEDULE))
-    wanted = {m: kernel_ids(m, built[m]) for m in registry.MEMOIRS}
+    order = sorted(registry.memoirs(), key=lambda m: -registry.memoir(m).cost)
+    wanted = {m: kernel_ids(m, built[m]) for m in registry.memoirs()}
     jobs = {}
     for m in order[:-1]:
         jobs.update(check_jobs(m, built[m], level))
@@ -171,12 +168,12 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
     for key, outs in zip(jobs, parallel.per_result(jobs, list(jobs), _job)):
         for (kind, _, r), o in zip(jobs[key], outs):
             done[f"{kind}:{r.id}"] = o
-    formed = {m: [k for k in (done[f"kernel:{i}"] for i in wanted[m]) if k is not None] for m in registry.MEMOIRS}
+    formed = {m: [k for k in (done[f"kernel:{i}"] for i in wanted[m]) if k is not None] for m in registry.memoirs()}
     log(f"verified and formed at {time.monotonic() - start:.0f} s")
     with tempfile.TemporaryDirectory() as tmp:
         formed = c_measured(formed, built, Path(tmp))
     log(f"C kernels measured at {time.monotonic() - start:.0f} s")
-    for memoir in registry.MEMOIRS:
+    for memoir in registry.memoirs():
         records = [pipeline.Record(r, *done[f"check:{i}"][0], done[f"check:{i}"][1]) for i, r in built[memoir].items()]
         ks, held = split_kernels(memoir, formed[memoir], log)
         for k in ks:
@@ -202,8 +199,6 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
     return written
 
 
-# Memoirs whose checks take longest go first to the workers (a scheduling hint only).
-SCHEDULE = ("cellerier", "haag1935", "charbonnier1908")
 
 
 def bench_input(out: Path, memoir: str) -> str | None:

@@ -1,42 +1,88 @@
-"""The DAG of Results: find Specs, take a dependency closure, build lazily.
+"""The DAG of Results: discover the memoirs, take a dependency closure, build lazily.
 
-The memoirs are named in one static table; importing a memoir's package gives
-its ``SPECS`` tuple.  Nothing is registered as a side effect of an import, so
-the order of imports cannot change what is found.
+Memoirs are plug-ins: every sub-package of a memoir package (``derivations``
+by default; ``PENDSYM_MEMOIR_PACKAGES``, a comma-separated list, names others)
+that defines ``MEMOIR = pendsym.memoir.Memoir(...)`` is a memoir.  Nothing
+here names one, and nothing is registered as a side effect of an import: the
+scan is a pure function of the package names.
 """
 from __future__ import annotations
 
+import difflib
 import importlib
+import os
+import pkgutil
+from functools import lru_cache
 from graphlib import CycleError, TopologicalSorter
+from types import MappingProxyType
 from typing import Iterable, Mapping
 
+from .memoir import Memoir
 from .result import Result, Spec
 
-MEMOIRS: Mapping[str, str] = {
-    "charbonnier1908": "derivations.charbonnier1908",
-    "haag1935": "derivations.haag1935",
-    "cellerier": "derivations.cellerier",
-}
+DEFAULT_PACKAGES = ("derivations",)
 
 
 class UnknownResult(KeyError):
-    """An id that no memoir defines."""
+    """An id (or memoir key) that no memoir defines; suggests the nearest ones."""
+
+    def __init__(self, name: str, known: Iterable[str] = ()):
+        super().__init__(name)
+        self.near = tuple(difflib.get_close_matches(name, list(known), n=3, cutoff=0.6)) if known else ()
+        if not self.near and known:
+            self.near = tuple(sorted(k for k in known if k.startswith(name.rsplit(".", 1)[0] + "."))[:3])
 
     def __str__(self) -> str:  # one line, for the CLI
-        return f"unknown result id: {self.args[0]}"
+        hint = f" (nearest: {', '.join(self.near)})" if self.near else ""
+        return f"unknown result id: {self.args[0]}{hint}"
 
 
-def memoir_specs(memoir: str) -> tuple[Spec, ...]:
+def packages() -> tuple[str, ...]:
+    """The packages whose sub-packages are memoirs."""
+    env = os.environ.get("PENDSYM_MEMOIR_PACKAGES", "")
+    names = tuple(p.strip() for p in env.split(",") if p.strip())
+    return names or DEFAULT_PACKAGES
+
+
+@lru_cache(maxsize=8)
+def discover(pkgs: tuple[str, ...]) -> Mapping[str, Memoir]:
+    """Every memoir found in the packages, by key, sorted by key."""
+    found: dict[str, Memoir] = {}
+    for pkg_name in pkgs:
+        pkg = importlib.import_module(pkg_name)
+        for info in sorted(pkgutil.iter_modules(pkg.__path__), key=lambda i: i.name):
+            if not info.ispkg:
+                continue
+            memoir = getattr(importlib.import_module(f"{pkg_name}.{info.name}"), "MEMOIR", None)
+            if not isinstance(memoir, Memoir):
+                continue
+            if memoir.key in found:
+                raise ValueError(f"two memoirs with the key {memoir.key}")
+            found[memoir.key] = memoir
+    return MappingProxyType(dict(sorted(found.items())))
+
+
+def memoirs() -> Mapping[str, Memoir]:
+    """The memoirs of this installation, by key."""
+    return discover(packages())
+
+
+def memoir(key: str) -> Memoir:
+    known = memoirs()
+    if key not in known:
+        raise UnknownResult(key, known)
+    return known[key]
+
+
+def memoir_specs(key: str) -> tuple[Spec, ...]:
     """The Specs of one memoir, in the memoir's order."""
-    if memoir not in MEMOIRS:
-        raise UnknownResult(memoir)
-    return tuple(importlib.import_module(MEMOIRS[memoir]).SPECS)
+    return memoir(key).specs
 
 
-def all_specs(memoirs: Iterable[str] | None = None) -> dict[str, Spec]:
-    """Specs by id, memoir by memoir in table order; duplicate ids are an error."""
+def all_specs(keys: Iterable[str] | None = None) -> dict[str, Spec]:
+    """Specs by id, memoir by memoir; duplicate ids are an error."""
     out: dict[str, Spec] = {}
-    for key in (MEMOIRS if memoirs is None else memoirs):
+    for key in (memoirs() if keys is None else keys):
         for spec in memoir_specs(key):
             if spec.id in out:
                 raise ValueError(f"duplicate result id {spec.id}")
@@ -48,8 +94,8 @@ def all_specs(memoirs: Iterable[str] | None = None) -> dict[str, Spec]:
 
 def memoir_of(result_id: str) -> str:
     key = result_id.split(".", 1)[0]
-    if key not in MEMOIRS:
-        raise UnknownResult(result_id)
+    if key not in memoirs():
+        raise UnknownResult(result_id, [s for m in memoirs().values() for s in (x.id for x in m.specs)])
     return key
 
 
@@ -62,18 +108,18 @@ def closure(ids: Iterable[str], specs: Mapping[str, Spec]) -> list[str]:
         if rid in need:
             continue
         if rid not in specs:
-            raise UnknownResult(rid)
+            raise UnknownResult(rid, specs)
         need[rid] = specs[rid].deps
         stack.extend(specs[rid].deps)
-    order = list(specs)  # memoir order breaks ties
-    sorter = TopologicalSorter({r: sorted(d, key=order.index) for r, d in need.items()})
+    order = {sid: i for i, sid in enumerate(specs)}  # memoir order breaks ties
+    sorter = TopologicalSorter({r: sorted(d, key=order.__getitem__) for r, d in need.items()})
     try:
         sorter.prepare()
     except CycleError as exc:
         raise ValueError(f"dependency cycle: {exc.args[1]}") from None
     out: list[str] = []
     while sorter.is_active():
-        ready = sorted(sorter.get_ready(), key=order.index)
+        ready = sorted(sorter.get_ready(), key=order.__getitem__)
         out.extend(ready)
         sorter.done(*ready)
     return out
@@ -91,7 +137,7 @@ def build(ids: Iterable[str] | None = None, memoirs: Iterable[str] | None = None
     """Build the requested Results (all, when ids is None) and only their closure."""
     if ids is not None:
         ids = list(ids)
-        memoirs = sorted({memoir_of(i) for i in ids}, key=list(MEMOIRS).index)
+        memoirs = sorted({memoir_of(i) for i in ids})
     specs = all_specs(memoirs)
     wanted = list(specs) if ids is None else ids
     built: dict[str, Result] = {}

@@ -4,18 +4,42 @@ Sections: general formulas and monomials (n°8–9 rebuilt, n°18–20), the
 examples on the angle (n°21–23), the elastic thread (n°24–26), the length
 growing with time (n°27–35).
 """
+import re
+
+from pendsym.memoir import Memoir, Section, headings_by
+
 from . import angle_examples, elastic, general, variable_length
 
-SPECS = general.specs() + angle_examples.specs() + elastic.specs() + variable_length.specs()
-
-TITLE = ("P. Charbonnier, Sur la théorie des perturbations du pendule (suite et fin), "
-         "Nouvelles annales de mathématiques, 4e série, t. 8 (1908), p. 220–238, n°18–35")
 SECTIONS = (
-    ("8-9", "General formulas (n°8–9, not in the file, rebuilt)"),
-    ("18-20", "§IV. The perturbing function depends on the angle: general formulas, monomials, J_m (n°18–20)"),
-    ("21-21", "n°21. Second term of the period"),
-    ("22-22", "n°22. Thread winding on a curve"),
-    ("23-23", "n°23. The cycloidal pendulum"),
-    ("24-26", "§V. Pendulum with an elastic thread (n°24–26)"),
-    ("27-35", "§VI. Pendulum of variable length (n°27–35)"),
+    Section.of(general, "General formulas (n°8–9, rebuilt) and the angle monomials (n°18–20)"),
+    Section.of(angle_examples, "The worked examples on the angle (n°21–23)"),
+    Section.of(elastic, "Pendulum with an elastic thread (n°24–26)"),
+    Section.of(variable_length, "Pendulum of variable length (n°27–35)"),
+)
+
+
+def _paragraphs(lo: int, hi: int):
+    """Takes a Spec whose paragraph n° lies in [lo, hi]."""
+    def takes(spec) -> bool:
+        m = re.search(r"(\d+)", spec.source.para)
+        return m is not None and lo <= int(m.group(1)) <= hi
+    return takes
+
+
+MEMOIR = Memoir(
+    key="charbonnier1908",
+    title=("P. Charbonnier, Sur la théorie des perturbations du pendule (suite et fin), "
+           "Nouvelles annales de mathématiques, 4e série, t. 8 (1908), p. 220–238, n°18–35"),
+    sections=SECTIONS,
+    headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), (
+        ("General formulas (n°8–9, not in the file, rebuilt)", _paragraphs(8, 9)),
+        ("§IV. The perturbing function depends on the angle: general formulas, monomials, J_m (n°18–20)",
+         _paragraphs(18, 20)),
+        ("n°21. Second term of the period", _paragraphs(21, 21)),
+        ("n°22. Thread winding on a curve", _paragraphs(22, 22)),
+        ("n°23. The cycloidal pendulum", _paragraphs(23, 23)),
+        ("§V. Pendulum with an elastic thread (n°24–26)", _paragraphs(24, 26)),
+        ("§VI. Pendulum of variable length (n°27–35)", _paragraphs(27, 35)),
+    )),
+    cost=1.0,
 )

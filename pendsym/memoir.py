@@ -1,0 +1,88 @@
+"""What a memoir plug-in exports: one :class:`Memoir` describing it.
+
+A memoir is a package (``derivations/<key>/``) whose ``__init__`` defines
+``MEMOIR = Memoir(...)``.  The registry finds it by scanning the memoir
+packages (see :mod:`pendsym.registry`); nothing under ``pendsym/`` names it.
+See ``docs/adding-a-memoir.md``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from types import ModuleType
+from typing import Callable
+
+from .result import Spec
+
+
+@dataclass(frozen=True)
+class Section:
+    """One section of a memoir: the module (or package) that builds its Specs.
+
+    The section's source, and the engine and memoir modules it imports, are
+    what its Results' cache keys cover (see :mod:`pendsym.incremental`).
+    """
+
+    module: str                  # dotted name of the module whose ``specs()`` gives the Specs
+    title: str
+    specs: tuple[Spec, ...]
+
+    @classmethod
+    def of(cls, module: ModuleType, title: str) -> "Section":
+        """The section built by ``module.specs()``."""
+        return cls(module.__name__, title, tuple(module.specs()))
+
+    @property
+    def ids(self) -> tuple[str, ...]:
+        return tuple(s.id for s in self.specs)
+
+
+@dataclass(frozen=True)
+class Heading:
+    """A heading of the report and the Results under it (by default, one per section)."""
+
+    title: str
+    ids: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Memoir:
+    """A memoir plug-in.
+
+    ``affinity``: groups of Result ids whose checks share computations (run in one worker);
+    ``cost``: relative time of the memoir's checks (the scheduler starts the costliest first);
+    ``kernels``: whether its kernel declarations are ready to be emitted;
+    ``headings``: the report's structure, when it differs from the sections.
+    """
+
+    key: str
+    title: str
+    sections: tuple[Section, ...]
+    headings: tuple[Heading, ...] = ()
+    affinity: tuple[tuple[str, ...], ...] = ()
+    cost: float = 1.0
+    kernels: bool = True
+
+    @property
+    def specs(self) -> tuple[Spec, ...]:
+        return tuple(s for sec in self.sections for s in sec.specs)
+
+    def report_headings(self) -> tuple[Heading, ...]:
+        return self.headings or tuple(Heading(sec.title, sec.ids) for sec in self.sections)
+
+    def section_of(self, result_id: str) -> Section:
+        for sec in self.sections:
+            if result_id in sec.ids:
+                return sec
+        raise KeyError(result_id)
+
+
+def headings_by(specs: tuple[Spec, ...], rules: tuple[tuple[str, Callable[[Spec], bool]], ...]) -> tuple[Heading, ...]:
+    """Headings from (title, predicate) rules; a Spec goes under the first heading that takes it."""
+    placed: set[str] = set()
+    out = []
+    for title, takes in rules:
+        ids = tuple(s.id for s in specs if s.id not in placed and takes(s))
+        placed |= set(ids)
+        if ids:
+            out.append(Heading(title, ids))
+    return tuple(out)
