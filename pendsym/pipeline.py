@@ -62,12 +62,29 @@ def _compare_only(r: Result):
 
 
 def assess(results: Iterable[Result], level: str = "full", run_checks: bool = True) -> list[Record]:
-    """Compare every Result and run its check, in parallel over the cores."""
+    """Compare every Result and run its check, in parallel over the cores; then fill the chains."""
     results = list(results)
     by_id = {r.id: r for r in results}
     fn = functools.partial(assessed, level=level) if run_checks else _compare_only
     done = parallel.per_result(by_id, [r.id for r in results], fn)
-    return [Record(r, status, how, ev) for r, ((status, how), ev) in zip(results, done)]
+    records = [Record(r, status, how, ev) for r, ((status, how), ev) in zip(results, done)]
+    return fill_chains(records) if run_checks else records
+
+
+def fill_chains(records: Sequence[Record]) -> list[Record]:
+    """Stage 3b: the evidence of each Chain step, from the evidence of the Results it feeds
+    (which must be among the records: a step is assessed with what it feeds)."""
+    evidence = {rec.result.id: rec.evidence for rec in records}
+    out = []
+    for rec in records:
+        chk = rec.result.spec.check
+        if isinstance(chk, checks.Chain):
+            missing = [d for d in chk.downstream if d not in evidence]
+            if missing:
+                raise ValueError(f"{rec.result.id} is verified through {', '.join(missing)}, not assessed with it")
+            rec = Record(rec.result, rec.status, rec.comparison, checks.chained(chk, evidence))
+        out.append(rec)
+    return out
 
 
 # ----------------------------------------------------------------- results.json
