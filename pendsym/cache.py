@@ -59,6 +59,37 @@ def key(*parts: str, packages: tuple[str, ...] = ("pendsym",), exclude: tuple[st
     return h.hexdigest()
 
 
+MISSING = object()
+
+
+def _path(k: str) -> Path | None:
+    d = directory()
+    return None if d is None else d / k[:2] / f"{k}.pickle"
+
+
+def load(k: str):
+    """The stored value under k, or MISSING."""
+    path = _path(k)
+    if path is None or not path.exists():
+        return MISSING
+    try:
+        with path.open("rb") as fh:
+            return pickle.load(fh)
+    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+        return MISSING
+
+
+def store(k: str, value) -> None:
+    path = _path(k)
+    if path is None:
+        return
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+    with os.fdopen(fd, "wb") as fh:
+        pickle.dump(value, fh)
+    os.replace(tmp, path)
+
+
 def memo(k: str, compute: Callable[[], T]) -> T:
     """compute(), or its stored value under key k."""
     d = directory()

@@ -15,7 +15,7 @@ import sympy as sp
 import mpmath as mp
 
 from . import derive as drv
-from . import pipeline, registry, scene
+from . import pipeline, registry, scene, stages
 
 
 class UsageError(Exception):
@@ -81,9 +81,12 @@ def cmd_derive(args) -> int:
             if rec.result.printed is not None:
                 print(f"  printed: {sp.sstr(rec.result.printed)}")
         return 0
-    written = drv.derive_all(Path(args.out), level=args.level, log=lambda m: print(m, file=sys.stderr))
-    print(f"wrote {len(written)} files under {args.out}/")
-    return 0
+    outcome = drv.derive_all(Path(args.out), level=args.level, log=lambda m: print(m, file=sys.stderr))
+    for line in outcome.summary:
+        print(line)
+    if not outcome.nothing_changed:
+        print(f"wrote {len(outcome.written)} files under {args.out}/")
+    return 1 if outcome.failed else 0
 
 
 def cmd_check(args) -> int:
@@ -138,7 +141,7 @@ def main(argv=None) -> int:
     except registry.UnknownResult as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
-    except scene.SceneError as exc:
+    except (scene.SceneError, stages.OutputError) as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
 

@@ -10,7 +10,7 @@ from typing import Iterable, Sequence
 import mpmath as mp
 import sympy as sp
 
-from . import cache, checks, parallel, registry, verify
+from . import cache, checks, registry, schedule, verify
 from .result import Evidence, Result
 
 
@@ -25,7 +25,8 @@ class Record:
 
     @property
     def verified(self) -> bool:
-        return self.evidence is not None and self.evidence.passed
+        """An independent check passed (a definition is not a claim: it is never "verified")."""
+        return not self.result.spec.definition and self.evidence is not None and self.evidence.passed
 
 
 def compare(result: Result) -> tuple[str, str]:
@@ -36,20 +37,12 @@ def compare(result: Result) -> tuple[str, str]:
 
 
 def check(result: Result, level: str = "full") -> Evidence | None:
-    """Stage 3: the independent check, at 40 working digits unless it scopes its own.
-
-    The evidence is a pure function of the code and the Result: it is cached
-    under the content hash of both (see pendsym.cache).
-    """
+    """Stage 3: the independent check, at 40 working digits unless it scopes its own (a Chain's
+    evidence is filled by :func:`fill_chains`).  Callers cache it under the Result's key."""
     if result.spec.check is None or isinstance(result.spec.check, checks.Chain):
         return None
-
-    def run():
-        with mp.workdps(40):
-            return checks.run(result.spec.check, result, level)
-    key = cache.key("check", result.id, level, sp.srepr(result.derived), sp.srepr(result.printed),
-                    packages=("pendsym", registry.memoir(result.spec.memoir).sections[0].module.rsplit(".", 1)[0]), exclude=cache.EMITTERS)
-    return cache.memo(key, run)
+    with mp.workdps(40):
+        return checks.run(result.spec.check, result, level)
 
 
 def assessed(r: Result, level: str = "full") -> tuple[tuple[str, str], Evidence | None]:
@@ -66,7 +59,7 @@ def assess(results: Iterable[Result], level: str = "full", run_checks: bool = Tr
     results = list(results)
     by_id = {r.id: r for r in results}
     fn = functools.partial(assessed, level=level) if run_checks else _compare_only
-    done = parallel.per_result(by_id, [r.id for r in results], fn)
+    done = schedule.per_result(by_id, [r.id for r in results], fn)
     records = [Record(r, status, how, ev) for r, ((status, how), ev) in zip(results, done)]
     return fill_chains(records) if run_checks else records
 

@@ -1,5 +1,5 @@
-"""pendsym.parallel: forked workers give the same answers, in the same order, as a serial run."""
-from pendsym import parallel
+"""pendsym.schedule: forked workers give the same answers, in the same order, as a serial run."""
+from pendsym import schedule
 
 
 def _square(x):
@@ -10,14 +10,14 @@ def test_per_result_matches_serial(monkeypatch):
     data = {f"r{i}": i for i in range(7)}
     ids = sorted(data, reverse=True)
     monkeypatch.setenv("PENDSYM_WORKERS", "2")
-    par = parallel.per_result(data, ids, _square)
+    par = schedule.per_result(data, ids, _square)
     monkeypatch.setenv("PENDSYM_WORKERS", "1")
-    ser = parallel.per_result(data, ids, _square)
+    ser = schedule.per_result(data, ids, _square)
     assert par == ser == [data[i] ** 2 for i in ids]
 
 
 def test_workers_env(monkeypatch):
     monkeypatch.setenv("PENDSYM_WORKERS", "3")
-    assert parallel.workers() == 3
+    assert schedule.workers() == 3
     monkeypatch.setenv("PENDSYM_WORKERS", "0")
-    assert parallel.workers() == 1
+    assert schedule.workers() == 1

@@ -1,0 +1,321 @@
+"""The stages of ``make derive``, each a plain function; :mod:`pendsym.derive` is their spine.
+
+plan → build → compare and check → form kernels → measure C → emit → write.
+
+Every stage that computes goes through the cache (:mod:`pendsym.cache`) under the
+content keys of :mod:`pendsym.keys`, so a stage redoes only what changed; the
+log says what was redone.
+"""
+from __future__ import annotations
+
+import dataclasses
+import functools
+import os
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Mapping
+
+import sympy as sp
+
+from . import cache, checks, keys, pipeline, registry, schedule
+from .emit import files, kernels as kn, latex
+from .io import content_hash, write_atomic
+from .result import Result, Spec
+
+Log = Callable[[str], None]
+
+
+class OutputError(ValueError):
+    """The output directory cannot be written (reported in one line, before any work)."""
+
+
+@dataclass(frozen=True)
+class Plan:
+    """What a derive covers: the memoirs, their Specs in dependency order, and each Result's key."""
+
+    level: str
+    memoirs: tuple[str, ...]
+    specs: Mapping[str, Spec]
+    order: tuple[str, ...]
+    keys: Mapping[str, str]
+    emitter: str
+
+    def key(self, kind: str, rid: str) -> str:
+        return keys.digest((kind, self.level if kind == "assessed" else "", self.keys[rid],
+                          self.emitter if kind in ("kernel", "c") else ""))
+
+
+# ----------------------------------------------------------------- plan
+def output_dir(out: Path | str) -> Path:
+    """The output directory, checked writable before any work (created if missing)."""
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise OutputError(f"--out {out}: not a directory")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=out, prefix=".probe-"):
+            pass
+    except OSError as exc:
+        raise OutputError(f"--out {out}: cannot write there ({exc.strerror or exc})") from None
+    return out
+
+
+def tree_key(level: str) -> str:
+    """The key of the whole tree (every source file, the versions, the level): no memoir imported."""
+    return keys.tree_key(registry.packages(), level)
+
+
+def unchanged(tree: str, out: Path) -> bool:
+    """True when the last derive of this very tree wrote the files that ``out`` holds now."""
+    manifest = cache.load(_manifest_key(tree, out))
+    if manifest is cache.MISSING or not isinstance(manifest, dict):
+        return False
+    for rel, digest in manifest.items():
+        path = out / rel
+        if not path.is_file() or content_hash(path.read_text(encoding="utf-8")) != digest:
+            return False
+    return True
+
+
+def _manifest_key(tree: str, out: Path) -> str:
+    return keys.digest(("manifest", tree, str(out.resolve())))
+
+
+def plan(level: str) -> Plan:
+    specs = registry.all_specs()
+    order = tuple(registry.closure(list(specs), specs))
+    section = {s.id: sec.module for m in registry.memoirs().values() for sec in m.sections for s in sec.specs}
+    roots = ("pendsym", *registry.packages())
+    ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, roots)
+    return Plan(level, tuple(registry.memoirs()), specs, order, ks, keys.emitter_hash())
+
+
+# ----------------------------------------------------------------- build
+def _forms(spec: Spec, built: Mapping[str, Result]) -> tuple[sp.Basic, sp.Basic | None]:
+    r = registry.build_one(spec, built)
+    return r.derived, r.printed
+
+
+def _build_ids(pl: Plan, ids: list[str], built: dict) -> dict[str, Result]:
+    """Results of ids (dependencies first), their forms from the cache or built here."""
+    for rid in ids:
+        spec = pl.specs[rid]
+        derived, printed = cache.memo(pl.key("built", rid), functools.partial(_forms, spec, built))
+        built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={d: built[d] for d in spec.deps})
+    return built
+
+
+def _forms_of(pl: Plan, ids: list[str]) -> dict:
+    built = _build_ids(pl, ids, {})
+    return {i: (built[i].derived, built[i].printed) for i in ids}
+
+
+def build(pl: Plan, log: Log) -> dict[str, Result]:
+    """Every Result.  The memoir with the most Results is built here (its derivation caches stay
+    warm for the forked checks) while a forked process builds the others."""
+    start = time.monotonic()
+    fresh = [i for i in pl.order if cache.load(pl.key("built", i)) is cache.MISSING]
+    home = max(pl.memoirs, key=lambda m: sum(1 for i in pl.order if pl.specs[i].memoir == m))
+    away = [i for i in pl.order if pl.specs[i].memoir != home]
+    built: dict[str, Result] = {}
+    if fresh and any(pl.specs[i].memoir != home for i in fresh):
+        pending = schedule.in_background(_forms_of, pl, away)
+        _build_ids(pl, [i for i in pl.order if pl.specs[i].memoir == home], built)
+        for rid, (derived, printed) in pending().items():
+            spec = pl.specs[rid]
+            built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={})
+        built = _rewire(pl, built)
+    else:
+        _build_ids(pl, list(pl.order), built)
+    log(f"built {len(built)} results ({len(fresh)} derived anew) in {time.monotonic() - start:.0f} s")
+    return built
+
+
+def _rewire(pl: Plan, built: dict[str, Result]) -> dict[str, Result]:
+    """Results in plan order, each wired to its built dependencies."""
+    out: dict[str, Result] = {}
+    for rid in pl.order:
+        r = built[rid]
+        out[rid] = Result(spec=r.spec, derived=r.derived, printed=r.printed, deps={d: out[d] for d in r.spec.deps})
+    return out
+
+
+# ----------------------------------------------------------------- compare and check
+def _assess_job(job: tuple, level: str, keys_of: Mapping[str, str]) -> list:
+    """A job of one worker: the comparison and check of each Result, cached."""
+    return [cache.memo(keys_of[r.id], functools.partial(pipeline.assessed, r, level)) for r in job]
+
+
+def compare_and_check(pl: Plan, built: Mapping[str, Result], log: Log,
+                      progress: Callable[[int, int], None] | None = None) -> list[pipeline.Record]:
+    """Stages 2–3 for every Result (the costliest memoirs first, affinity groups in one worker),
+    then the chains.  Only Results whose key changed are checked anew."""
+    start = time.monotonic()
+    assessed_key = {i: pl.key("assessed", i) for i in pl.order}
+    todo = [i for i in pl.order if cache.load(assessed_key[i]) is cache.MISSING]
+    by_cost = sorted(pl.memoirs, key=lambda m: -registry.memoir(m).cost)
+    ordered = [i for m in by_cost for i in pl.order if pl.specs[i].memoir == m]
+    groups = [g for m in pl.memoirs for g in registry.memoir(m).affinity]
+    jobs = {job[0]: tuple(built[i] for i in job) for job in schedule.jobs_by_affinity(ordered, groups)}
+    done_ids: list[int] = [0]
+
+    def tick(first: str) -> None:
+        done_ids[0] += len(jobs[first])
+        if progress:
+            progress(done_ids[0], len(pl.order))
+    outs = schedule.per_result(jobs, list(jobs), functools.partial(_assess_job, level=pl.level, keys_of=assessed_key),
+                               progress=tick)
+    done = {r.id: o for job, out in zip(jobs.values(), outs) for r, o in zip(job, out)}
+    records = [pipeline.Record(built[i], *done[i][0], done[i][1]) for i in pl.order]
+    log(f"checked {len(todo)} results anew ({len(pl.order) - len(todo)} from the cache) "
+        f"in {time.monotonic() - start:.0f} s" + (f": {_sections(pl, todo)}" if todo else ""))
+    return pipeline.fill_chains(records)
+
+
+def _sections(pl: Plan, ids: list[str]) -> str:
+    """The sections the ids belong to, with their counts."""
+    count: dict[str, int] = {}
+    for m in pl.memoirs:
+        for sec in registry.memoir(m).sections:
+            n = sum(1 for i in ids if i in set(sec.ids))
+            if n:
+                count[sec.module] = n
+    return ", ".join(f"{mod} ({n})" for mod, n in count.items())
+
+
+# ----------------------------------------------------------------- kernels
+def kernel_ids(pl: Plan, built: Mapping[str, Result]) -> list[str]:
+    """The Results that ask for a kernel and have a closed form (in memoirs whose kernels are ready)."""
+    return [i for i in pl.order if pl.specs[i].kernel is not None and registry.memoir(pl.specs[i].memoir).kernels
+            and kn.closed_form(built[i].derived)]
+
+
+def _kernel_job(result: Result, key: str):
+    return cache.memo(key, functools.partial(kn.kernel_of, result))
+
+
+def form_kernels(pl: Plan, built: Mapping[str, Result], log: Log) -> dict[str, list]:
+    """Each memoir's kernels: stable forms chosen and measured in Python (cached per Result)."""
+    start = time.monotonic()
+    ids = kernel_ids(pl, built)
+    fresh = sum(1 for i in ids if cache.load(pl.key("kernel", i)) is cache.MISSING)
+    jobs = {i: built[i] for i in ids}
+    outs = schedule.per_result(jobs, ids, lambda r: _kernel_job(r, pl.key("kernel", r.id)))
+    formed = {m: [] for m in pl.memoirs}
+    for i, k in zip(ids, outs):
+        if k is not None:
+            formed[pl.specs[i].memoir].append(k)
+    log(f"formed {len(ids)} kernels ({fresh} anew) in {time.monotonic() - start:.0f} s")
+    return formed
+
+
+def _c_job(job):
+    lib, k, result = job
+    return kn.c_accuracy(lib, k, result)
+
+
+def measure_c(pl: Plan, built: Mapping[str, Result], formed: dict[str, list], log: Log) -> dict[str, list]:
+    """The accuracy of each kernel's compiled C, measured on the emitted code (cached per kernel;
+    a memoir's kernels are compiled only when one of them is not in the cache)."""
+    if not shutil.which("cc"):
+        return formed
+    start = time.monotonic()
+    out: dict[str, list] = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        jobs = {}
+        for memoir, ks in formed.items():
+            missing = [k for k in ks if cache.load(pl.key("c", k.result_id)) is cache.MISSING]
+            if missing:
+                d = Path(tmp) / memoir
+                d.mkdir()
+                lib = kn.compile_c(files.c_standalone(memoir, ks), d)
+                jobs.update({k.result_id: (lib, k, built[k.result_id]) for k in missing})
+        measured = dict(zip(jobs, schedule.per_result(jobs, list(jobs), _c_job)))
+        for rid, acc in measured.items():
+            cache.store(pl.key("c", rid), acc)
+    for memoir, ks in formed.items():
+        out[memoir] = [dataclasses.replace(k, c_accuracy=measured[k.result_id] if k.result_id in measured
+                                           else cache.load(pl.key("c", k.result_id))) for k in ks]
+    log(f"measured {len(jobs)} C kernels anew in {time.monotonic() - start:.0f} s")
+    return out
+
+
+def within_bound(k: kn.Kernel) -> bool:
+    """The kernel holds kn.BOUND ulp × max(1, κ) on its measured sample (Python and, if built, C)."""
+    accs = [a for a in (k.py_accuracy, k.c_accuracy) if a is not None]
+    return bool(accs) and all(a.max_scaled <= kn.BOUND for a in accs)
+
+
+# ----------------------------------------------------------------- emit and write
+def emit(pl: Plan, records: list[pipeline.Record], formed: dict[str, list], out: Path, log: Log) -> dict[Path, str]:
+    """Every generated file's text: per memoir its kernels (those within the bound), its report;
+    the memoir-independent swing-time kernels; results.json."""
+    texts: dict[Path, str] = {}
+    names: dict[str, list[str]] = {}
+    for memoir in pl.memoirs:
+        m = registry.memoir(memoir)
+        ks = [k for k in formed[memoir] if within_bound(k)]
+        held = [k for k in formed[memoir] if not within_bound(k)]
+        log(f"{memoir}: {len(ks)} kernels" + (f", {len(held)} withheld over the bound: "
+                                               + ", ".join(k.name for k in held) if held else ""))
+        for k in ks:
+            names.setdefault(k.result_id, []).append(k.name)
+        recs = [r for r in records if r.result.spec.memoir == memoir]
+        headings = tuple((h.ids, h.title) for h in m.report_headings())
+        texts.update({
+            out / "python" / f"{memoir}.py": files.python_module(memoir, ks),
+            out / "c" / f"{memoir}.c": files.c_source(memoir, ks),
+            out / "c" / f"{memoir}.h": files.c_header(memoir, ks),
+            out / "tex" / f"{memoir}.tex": latex.report(memoir, m.title, recs, ks, bench_input(out, memoir),
+                                                       headings, held),
+        })
+    texts.update(pendulum_kernels(out))
+    texts[out / "results.json"] = pipeline.results_json(records, names)
+    return texts
+
+
+def bench_input(out: Path, memoir: str) -> str | None:
+    """The benchmark table a report includes (relative to generated/tex), when make bench wrote one."""
+    name = f"{memoir}-period.tex"
+    return f"../bench/{name}" if (out / "bench" / name).exists() else None
+
+
+def pendulum_kernels(out: Path) -> dict[Path, str]:
+    """The memoir-independent exact swing time by the AGM (used by make bench and the tests)."""
+    ctx = {"max_steps": 40, "tol": "4e-16", "pi": "3.14159265358979323846"}
+    return {
+        out / "c" / "pendulum.c": files.render("pendulum.c.j2", **ctx),
+        out / "c" / "pendulum.h": files.render("pendulum.h.j2", **ctx),
+        out / "python" / "pendulum.py": files.render("pendulum.py.j2", **ctx),
+    }
+
+
+def write(texts: Mapping[Path, str], tree: str, out: Path, remember: bool = True) -> list[Path]:
+    """Write every file (atomically, only if changed); with ``remember``, note what this tree wrote
+    (so that the next derive of the same tree has nothing to do)."""
+    for path, text in texts.items():
+        write_atomic(path, text)
+    if remember:
+            cache.store(_manifest_key(tree, out),
+                    {str(p.relative_to(out)): content_hash(t) for p, t in sorted(texts.items())})
+    return list(texts)
+
+
+def failures(records: list[pipeline.Record]) -> list[pipeline.Record]:
+    """The Results whose independent check failed."""
+    return [r for r in records if r.evidence is not None and not r.evidence.passed]
+
+
+def summary(records: list[pipeline.Record]) -> list[str]:
+    """The closing lines of a derive: counts, then one line per failed check."""
+    defs = sum(1 for r in records if r.result.spec.definition)
+    verified = sum(1 for r in records if r.verified)
+    failed = failures(records)
+    lines = [f"{len(records)} results: {verified} verified, {len(failed)} failed, {defs} definitions, "
+             f"{len(records) - verified - len(failed) - defs} without a check"]
+    lines += [f"FAILED {r.result.id}: {r.evidence.truth[:80]} (largest residual {r.evidence.max_residual})"
+              for r in failed]
+    return lines
