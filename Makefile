@@ -4,7 +4,7 @@ VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: derive test test-quick report bench tex-tools clean
+.PHONY: derive test test-quick report bench bench-derive tex-tools clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -31,8 +31,12 @@ report: $(STAMP) tex-tools
 	  latexmk -pdf -interaction=nonstopmode -halt-on-error -silent -outdir=../../build/report $$f || exit 1; done
 	@ls -1 build/report/*.pdf
 
-bench: $(STAMP)
+bench: $(STAMP) bench-derive
 	$(BIN)/python -m pendsym.bench --out generated/bench
 
+# cold, no-op and one-section-changed derive, on a copy of the tree with a cache of its own
+bench-derive: $(STAMP)
+	$(BIN)/python -m pendsym.bench_derive --out generated/bench
+
 clean:
-	rm -rf build $(VENV)
+	rm -rf build $(VENV) .cache/pendsym

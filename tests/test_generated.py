@@ -14,8 +14,10 @@ def results(generated):
 
 def test_every_result_verified_with_evidence(results):
     for rid, rec in results.items():
-        if rec["definition"] and rec["evidence"] is None:
-            continue            # a pure definition states nothing to check
+        if rec["definition"]:   # a pure definition is not a claim: never counted as verified
+            assert rec["verified"] is False, rid
+            assert rec["evidence"] is None or rec["evidence"]["passed"], rid
+            continue
         assert rec["verified"] is True, rid
         ev = rec["evidence"]
         assert ev is not None and ev["passed"], rid
