@@ -1,12 +1,14 @@
-"""The ``pendsym`` command: list, derive, check.
+"""The ``pendsym`` command: list, derive, check, scene.
 
-Bad input (an unknown id or memoir, a bad argument) gets one line on stderr
-and exit code 2, never a traceback.
+Exit codes: 0 success; 1 a check failed (``check``, ``derive``); 2 bad input (an unknown id or
+memoir, a bad argument, an unwritable output, a corrupt results.json), reported in one line on
+stderr, never a traceback; 130 interrupted (Ctrl-C).
 """
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -15,7 +17,7 @@ import sympy as sp
 import mpmath as mp
 
 from . import derive as drv
-from . import pipeline, registry, scene, stages
+from . import checks, pipeline, registry, scene, stages
 
 
 class UsageError(Exception):
@@ -28,20 +30,24 @@ class Parser(argparse.ArgumentParser):
 
 
 def _parser() -> Parser:
-    p = Parser(prog="pendsym", description="Rebuild and check the classical perturbation theory of the pendulum.")
-    sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser)
-    ls = sub.add_parser("list", help="the Results, with their status")
-    ls.add_argument("--memoir", help="a memoir key, e.g. charbonnier1908")
+    keys = ", ".join(registry.memoirs())
+    p = Parser(prog="pendsym", description="Rebuild and check the classical perturbation theory of the pendulum.",
+               epilog="exit codes: 0 success, 1 a check failed, 2 bad input, 130 interrupted")
+    sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser, metavar="{list,derive,check,scene}")
+    ls = sub.add_parser("list", help="the Results, with their status", epilog=f"memoir keys: {keys}")
+    ls.add_argument("--memoir", help=f"a memoir key ({keys})")
     ls.add_argument("--json", action="store_true", help="JSON output")
-    ls.add_argument("--generated", default="generated", help="the generated/ directory to read status from")
+    ls.add_argument("--generated", default=None,
+                    help="the generated/ directory to read status from (default: the project's)")
     dv = sub.add_parser("derive", help="derive Results (all of them when no id is given, writing generated/)")
-    dv.add_argument("ids", nargs="*")
-    dv.add_argument("--out", default="generated")
-    dv.add_argument("--level", choices=("quick", "full"), default="full")
+    dv.add_argument("ids", nargs="*", help="only these Results and their dependencies (printed, nothing written)")
+    dv.add_argument("--out", default=None, help="output directory of a full derive (default: generated)")
+    dv.add_argument("--level", choices=("quick", "full"), default=None, help="check level of a full derive")
     sc = sub.add_parser("scene", help="compute one concrete configuration from a scene file (TOML)")
     sc.add_argument("file")
     sc.add_argument("--json", action="store_true")
-    ck = sub.add_parser("check", help="run one Result's independent verification and print the evidence")
+    ck = sub.add_parser("check", help="run one Result's independent verification and print the evidence",
+                        epilog="exit codes: 0 the check passed (or there is none), 1 it failed, 2 bad input")
     ck.add_argument("id")
     ck.add_argument("--level", choices=("quick", "full"), default="full")
     return p
@@ -55,9 +61,12 @@ def cmd_list(args) -> int:
         memoirs = [args.memoir]
     specs = registry.all_specs(memoirs)
     known = {}
-    path = Path(args.generated) / "results.json"
+    path = Path(args.generated or _project_generated()) / "results.json"
     if path.exists():
-        known = pipeline.load_results_json(path)
+        try:
+            known = pipeline.load_results_json(path)
+        except (ValueError, KeyError, TypeError, OSError) as exc:
+            raise UsageError(f"{path} is not a results.json pendsym can read ({type(exc).__name__})") from None
     rows = []
     for sid, spec in specs.items():
         rec = known.get(sid, {})
@@ -72,7 +81,17 @@ def cmd_list(args) -> int:
     return 0
 
 
+def _project_generated() -> Path:
+    """generated/ of the project this pendsym belongs to (the current directory's otherwise)."""
+    root = Path(__file__).resolve().parents[1]
+    return root / "generated" if (root / "pyproject.toml").exists() else Path("generated")
+
+
 def cmd_derive(args) -> int:
+    if args.ids and (args.out is not None or args.level is not None):
+        raise UsageError("--out and --level apply to a full derive (no ids); derive ID only prints the forms")
+    args.out = args.out or "generated"
+    args.level = args.level or "full"
     if args.ids:
         built = registry.build(args.ids)
         for rec in pipeline.assess(built.values(), run_checks=False):
@@ -90,10 +109,17 @@ def cmd_derive(args) -> int:
 
 
 def cmd_check(args) -> int:
-    built = registry.build([args.id])
+    spec = registry.all_specs([registry.memoir_of(args.id)]).get(args.id)
+    if spec is None:
+        raise registry.UnknownResult(args.id, registry.all_specs())
+    downstream = spec.check.downstream if isinstance(spec.check, checks.Chain) else ()
+    built = registry.build([args.id, *downstream])
     r = built[args.id]
     status, how = pipeline.compare(r)
     ev = pipeline.check(r, args.level)
+    if downstream:
+        evs = {d: pipeline.check(built[d], args.level) for d in downstream}
+        ev = checks.chained(spec.check, evs)
     print(f"{r.id} ({r.spec.source.ref()}): {r.spec.title}")
     print(f"  status: {status} ({how})")
     if r.printed is not None:
@@ -132,18 +158,24 @@ def cmd_scene(args) -> int:
 
 
 def main(argv=None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
     try:
+        if not argv:
+            _parser().print_help()
+            return 0
         args = _parser().parse_args(argv)
         return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check, "scene": cmd_scene}[args.cmd](args)
-    except UsageError as exc:
+    except (UsageError, registry.UnknownResult, scene.SceneError, stages.OutputError) as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2
-    except registry.UnknownResult as exc:
-        print(f"pendsym: error: {exc}", file=sys.stderr)
-        return 2
-    except (scene.SceneError, stages.OutputError) as exc:
-        print(f"pendsym: error: {exc}", file=sys.stderr)
-        return 2
+    except KeyboardInterrupt:
+        print("pendsym: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        # the reader went away (pendsym list | head): not an error of ours; silence the final flush
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":
