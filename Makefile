@@ -4,12 +4,20 @@ VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: derive test test-quick report bench bench-derive tex-tools clean
+.PHONY: lock derive test test-quick report bench bench-derive tex-tools clean
 
-$(STAMP): pyproject.toml
+$(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/pip install --quiet --disable-pip-version-check -e .
+	$(BIN)/pip install --quiet --disable-pip-version-check -c constraints.txt -e ".[test]"
 	touch $(STAMP)
+
+# rewrite constraints.txt from a fresh environment of pyproject.toml's pins
+lock:
+	rm -rf build/lockvenv && $(PYTHON) -m venv build/lockvenv
+	build/lockvenv/bin/pip install --quiet --disable-pip-version-check -e ".[test]"
+	{ echo "# The whole environment pendsym was tested with (direct and indirect dependencies), exact."; \
+	  echo "# make installs with -c constraints.txt; refresh: make lock."; \
+	  build/lockvenv/bin/pip freeze --exclude-editable --disable-pip-version-check; } > constraints.txt
 
 derive: $(STAMP)
 	$(BIN)/pendsym derive --out generated
