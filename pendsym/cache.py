@@ -128,6 +128,7 @@ def canonical(data: Any) -> bytes:
 
 
 def checksum(payload: Any) -> str:
+    """sha256 (hex) of the canonical JSON of a payload."""
     return hashlib.sha256(canonical(payload)).hexdigest()
 
 
