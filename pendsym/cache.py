@@ -4,37 +4,92 @@ An entry is keyed by the content hash of everything that determines it: the
 Result's id and expressions, the level, the versions of SymPy and mpmath, and
 the source text of the engine and of the memoir's derivations.  Any change
 of code therefore misses the cache; a hit returns exactly what the
-computation would return.  The cache lives in ``.cache/pendsym`` under the
-working directory (PENDSYM_CACHE overrides it; PENDSYM_CACHE=off disables it).
+computation would return.
+
+Entries are data, never code: ``<dir>/<key[:2]>/<key>.json`` holds
+``{"format": 1, "key": key, "checksum": sha256 of the canonical JSON of the
+payload, "payload": pendsym.codec data}``.  An entry that is missing,
+unreadable, too big, of another format, filed under another key, with a wrong
+checksum or that does not decode is recomputed and replaced; the cache never
+fails because of what it finds on disk.  Old ``.pickle`` entries are never
+opened.
+
+The directory is ``$PENDSYM_CACHE`` (``off`` disables the cache), else
+``.cache/pendsym`` in the project root (the checkout holding pyproject.toml
+and pendsym/), else — for an installed package — ``$XDG_CACHE_HOME/pendsym``
+or ``~/.cache/pendsym``.  It never depends on the working directory.
 """
 from __future__ import annotations
 
 import hashlib
 import importlib
+import json
 import os
-import pickle
-import tempfile
+import re
+import secrets
+import stat
 from functools import lru_cache
 from pathlib import Path
-from typing import Callable, TypeVar
+from typing import Any, Callable, TypeVar
 
 import mpmath
 import sympy
 
+from . import codec
+
 T = TypeVar("T")
 
+FORMAT = 1
+MAX_BYTES = 64 * 2 ** 20      # a bigger entry is not read (and is replaced)
+_KEY = re.compile(r"[0-9a-f]{16,128}")
+_ENTRY = re.compile(r"[0-9a-f]{16,128}\.(?:json|pickle)|\.[0-9a-f]{16,128}\.[0-9a-f]+\.tmp")
 
-def directory() -> Path | None:
-    env = os.environ.get("PENDSYM_CACHE", "")
-    if env.lower() == "off":
-        return None
-    return Path(env) if env else Path.cwd() / ".cache" / "pendsym"
 
+class _Missing:
+    """The type of :data:`MISSING`."""
+
+    def __repr__(self) -> str:
+        return "MISSING"
+
+
+MISSING: Any = _Missing()   # what load() returns when there is no valid entry
 
 # Parts of the engine that cannot change a check's evidence (they only emit files).
 EMITTERS = ("emit", "templates", "cli.py", "bench.py", "derive.py")
 
 
+# ----------------------------------------------------------------- where
+def project_root() -> Path | None:
+    """The checkout this pendsym was imported from (pyproject.toml beside pendsym/), or None."""
+    root = Path(__file__).resolve().parent.parent
+    if (root / "pyproject.toml").is_file() and (root / "pendsym" / "__init__.py").is_file():
+        return root
+    return None
+
+
+def directory() -> Path | None:
+    """The cache directory, or None when PENDSYM_CACHE=off."""
+    env = os.environ.get("PENDSYM_CACHE", "")
+    if env.lower() == "off":
+        return None
+    if env:
+        return Path(env).expanduser()
+    root = project_root()
+    if root is not None:
+        return root / ".cache" / "pendsym"
+    xdg = os.environ.get("XDG_CACHE_HOME", "")
+    base = Path(xdg) if os.path.isabs(xdg) else Path.home() / ".cache"
+    return base / "pendsym"
+
+
+def entry_path(d: Path, k: str) -> Path:
+    """Where the entry of key k lives under d."""
+    if not (isinstance(k, str) and _KEY.fullmatch(k)):
+        raise ValueError(f"not a cache key: {k!r}")
+    return d / k[:2] / f"{k}.json"
+
+
+# ----------------------------------------------------------------- keys
 @lru_cache(maxsize=None)
 def code_hash(package: str, exclude: tuple[str, ...] = ()) -> str:
     """sha256 of the source files of a package (sorted by path), less the excluded parts."""
@@ -51,7 +106,13 @@ def code_hash(package: str, exclude: tuple[str, ...] = ()) -> str:
     return h.hexdigest()
 
 
+def file_hash(path: str | os.PathLike) -> str:
+    """sha256 of a file's bytes."""
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
 def key(*parts: str, packages: tuple[str, ...] = ("pendsym",), exclude: tuple[str, ...] = ()) -> str:
+    """The key of a computation: its parts, the code of the packages, SymPy's and mpmath's versions."""
     h = hashlib.sha256()
     for p in (sympy.__version__, mpmath.__version__, *(code_hash(pk, exclude) for pk in packages), *parts):
         h.update(p.encode())
@@ -59,53 +120,131 @@ def key(*parts: str, packages: tuple[str, ...] = ("pendsym",), exclude: tuple[st
     return h.hexdigest()
 
 
-MISSING = object()
+# ----------------------------------------------------------------- entries
+def canonical(data: Any) -> bytes:
+    """The canonical JSON of codec data (sorted keys, no spaces, ASCII, no NaN)."""
+    return json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=True,
+                      allow_nan=False).encode("ascii")
 
 
-def _path(k: str) -> Path | None:
-    d = directory()
-    return None if d is None else d / k[:2] / f"{k}.pickle"
+def checksum(payload: Any) -> str:
+    """sha256 (hex) of the canonical JSON of a payload."""
+    return hashlib.sha256(canonical(payload)).hexdigest()
 
 
-def load(k: str):
-    """The stored value under k, or MISSING."""
-    path = _path(k)
-    if path is None or not path.exists():
-        return MISSING
+def _no_constant(name: str):
+    raise ValueError(f"{name} is not JSON")
+
+
+def _read(path: Path) -> bytes | None:
+    """The bytes of a regular file of at most MAX_BYTES (no symlink, no FIFO), else None."""
+    flags = os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
     try:
-        with path.open("rb") as fh:
-            return pickle.load(fh)
-    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+        with os.fdopen(os.open(path, flags), "rb") as fh:
+            st = os.fstat(fh.fileno())
+            if not stat.S_ISREG(st.st_mode) or st.st_size > MAX_BYTES:
+                return None
+            data = fh.read(MAX_BYTES + 1)
+    except OSError:
+        return None
+    return data if len(data) <= MAX_BYTES else None
+
+
+def parse(raw: bytes, k: str) -> Any:
+    """The value held by an entry's bytes for key k, or MISSING if they are not a valid entry."""
+    try:
+        doc = json.loads(raw.decode("utf-8"), parse_constant=_no_constant)
+        if not (isinstance(doc, dict) and set(doc) == {"format", "key", "checksum", "payload"}
+                and type(doc["format"]) is int and doc["format"] == FORMAT
+                and doc["key"] == k and doc["checksum"] == checksum(doc["payload"])):
+            return MISSING
+        return codec.decode(doc["payload"])
+    except Exception:        # bad UTF-8, bad JSON, CodecError, RecursionError, MemoryError …
         return MISSING
 
 
-def store(k: str, value) -> None:
-    path = _path(k)
-    if path is None:
-        return
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-    with os.fdopen(fd, "wb") as fh:
-        pickle.dump(value, fh)
-    os.replace(tmp, path)
+def load(k: str) -> Any:
+    """The value stored under key k, or MISSING (no cache, no entry, or an invalid one)."""
+    d = directory()
+    if d is None:
+        return MISSING
+    raw = _read(entry_path(d, k))
+    return MISSING if raw is None else parse(raw, k)
+
+
+def dump(k: str, value: Any) -> bytes:
+    """An entry's bytes for value under key k; CodecError if value cannot be encoded."""
+    payload = codec.encode(value)
+    return canonical({"format": FORMAT, "key": k, "checksum": checksum(payload), "payload": payload})
+
+
+def store(k: str, value: Any) -> bool:
+    """Store value under key k, atomically; False (and nothing written) when the cache is off,
+    value cannot be encoded, its entry would exceed MAX_BYTES or the directory cannot be written."""
+    d = directory()
+    if d is None:
+        return False
+    path = entry_path(d, k)
+    try:
+        raw = dump(k, value)
+    except (ValueError, RecursionError):      # CodecError is a ValueError
+        return False
+    if len(raw) > MAX_BYTES:                  # it would never be read back
+        return False
+    tmp = path.parent / f".{k}.{secrets.token_hex(8)}.tmp"
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        # 0o666 less the umask, as for any file the user creates (mkstemp would give 0o600)
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(raw)
+        os.replace(tmp, path)
+        return True
+    except OSError:
+        try:
+            tmp.unlink(missing_ok=True)
+        except OSError:
+            pass
+        return False
 
 
 def memo(k: str, compute: Callable[[], T]) -> T:
-    """compute(), or its stored value under key k."""
-    d = directory()
-    if d is None:
-        return compute()
-    path = d / k[:2] / f"{k}.pickle"
-    if path.exists():
-        try:
-            with path.open("rb") as fh:
-                return pickle.load(fh)
-        except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
-            pass  # an unreadable entry is recomputed and replaced
-    value = compute()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-    with os.fdopen(fd, "wb") as fh:
-        pickle.dump(value, fh)
-    os.replace(tmp, path)
+    """compute(), or its stored value under key k (an invalid entry is recomputed and replaced)."""
+    value = load(k)
+    if value is MISSING:
+        value = compute()
+        store(k, value)
     return value
+
+
+def clear() -> int:
+    """Remove the cache's entries (and its directories once empty); the number of files removed.
+    Only files named as entries are removed, whatever PENDSYM_CACHE points to."""
+    d = directory()
+    if d is None or not d.is_dir():
+        return 0
+    n = 0
+    for sub in d.iterdir():
+        if not (re.fullmatch(r"[0-9a-f]{2}", sub.name) and sub.is_dir() and not sub.is_symlink()):
+            continue
+        for f in sub.iterdir():
+            if _ENTRY.fullmatch(f.name) and not f.is_dir():
+                f.unlink(missing_ok=True)
+                n += 1
+        try:
+            sub.rmdir()
+        except OSError:
+            pass            # something else lives there
+    try:
+        d.rmdir()
+    except OSError:
+        pass
+    return n
+
+
+if __name__ == "__main__":      # python -m pendsym.cache [clear]
+    import sys
+    if sys.argv[1:] == ["clear"]:
+        print(f"removed {clear()} entries from {directory()}")
+    else:
+        print(directory())
