@@ -10,9 +10,11 @@ import argparse
 import json
 import os
 import sys
+import time
 from pathlib import Path
 
 import sympy as sp
+import tqdm
 
 import mpmath as mp
 
@@ -81,6 +83,25 @@ def cmd_list(args) -> int:
     return 0
 
 
+def _progress():
+    """(tick(done, total), close): a progress bar on a terminal, a plain line every 30 s otherwise."""
+    if sys.stderr.isatty():
+        bar = tqdm.tqdm(total=0, desc="checking", unit="result", file=sys.stderr, leave=False)
+
+        def tick(done: int, total: int) -> None:
+            bar.total = total
+            bar.update(done - bar.n)
+        return tick, bar.close
+    last = [time.monotonic()]
+
+    def plain(done: int, total: int) -> None:
+        now = time.monotonic()
+        if now - last[0] >= 30:
+            print(f"checking: {done}/{total} results done, {total - done} to go", file=sys.stderr, flush=True)
+            last[0] = now
+    return plain, lambda: None
+
+
 def _project_generated() -> Path:
     """generated/ of the project this pendsym belongs to (the current directory's otherwise)."""
     root = Path(__file__).resolve().parents[1]
@@ -100,7 +121,12 @@ def cmd_derive(args) -> int:
             if rec.result.printed is not None:
                 print(f"  printed: {sp.sstr(rec.result.printed)}")
         return 0
-    outcome = drv.derive_all(Path(args.out), level=args.level, log=lambda m: print(m, file=sys.stderr))
+    tick, done = _progress()
+    try:
+        outcome = drv.derive_all(Path(args.out), level=args.level, log=lambda m: print(m, file=sys.stderr),
+                                 progress=tick)
+    finally:
+        done()
     for line in outcome.summary:
         print(line)
     if not outcome.nothing_changed:

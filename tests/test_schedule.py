@@ -21,3 +21,17 @@ def test_workers_env(monkeypatch):
     assert schedule.workers() == 3
     monkeypatch.setenv("PENDSYM_WORKERS", "0")
     assert schedule.workers() == 1
+
+
+def test_affinity_groups_run_as_one_job_in_order():
+    ids = ["a", "b", "c", "d", "e"]
+    jobs = schedule.jobs_by_affinity(ids, [("b", "d"), ("c", "zz")])
+    assert jobs == [("a",), ("b", "d"), ("c",), ("e",)]     # a group with an absent member is split
+
+
+def test_background_value_and_failure(monkeypatch):
+    monkeypatch.setenv("PENDSYM_WORKERS", "2")
+    assert schedule.in_background(_square, 7)() == 49
+    import pytest
+    with pytest.raises(RuntimeError, match="ZeroDivisionError"):
+        schedule.in_background(lambda: 1 / 0)()
