@@ -59,6 +59,11 @@ def label(env: Environment) -> str:
     return ", ".join(f"{name}={env[name]}" for name in ("u_exact", "K", "s", "n") if name in env)
 
 
+def as_mpf(value: sp.Rational) -> mp.mpf:
+    """An exact rational as an mpf at the working precision."""
+    return mp.mpf(value.p) / value.q
+
+
 def formula_input(value) -> sp.Float:
     """A truth value handed to a formula (F_{n−1}, x_0 …): its decimal form at the working precision."""
     return sp.Float(str(value), 45)
@@ -212,7 +217,7 @@ def Gamma_over_k_power(q: int, m: int):
     def truth(epsilon, dps):
         K_value = 1 / epsilon
         k_value = K_value * (1 - K_value)
-        env = {"K": K_value, "lambda": mp.mpf(LAMBDA_VALUE), "u": mp.mpf(sp.Rational(LEADING_U))}
+        env = {"K": K_value, "lambda": as_mpf(LAMBDA_VALUE), "u": as_mpf(sp.Rational(LEADING_U))}
         return Gamma_on_blade(blade_solution(LEADING_U, dps), env, m) / k_value**q
     return truth
 
