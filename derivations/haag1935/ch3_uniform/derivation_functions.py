@@ -160,7 +160,8 @@ def Gamma_polynomials(n_max: int, recurrence: sp.Expr, Gamma0: sp.Expr, Gamma1: 
         if any(power[0] % 2 for power, cf in coeffs.items() if sp.simplify(cf) != 0):
             raise ValueError("Γ_n is not symmetric in K ↔ 1 − K")
         in_k = sum(cf * (sp.Rational(1, 4) - k) ** (power[0] // 2) for power, cf in coeffs.items())
-        polys.append(sum(sp.factor(cf / denominator) * k**power[0] for power, cf in sp.Poly(sp.expand(in_k), k).terms()))
+        in_k_terms = sp.Poly(sp.expand(in_k), k).terms()
+        polys.append(sum(sp.factor(cf / denominator) * k**power[0] for power, cf in in_k_terms))
     return tuple(polys)
 
 
@@ -267,7 +268,8 @@ def F_recurrence(deps) -> sp.Expr:
     C = derived_of(deps, 167, "first_integral")
     M_x_prime_lambda = K * derived_of(deps, 159, "vl") + derived_of(deps, 159, "wl")
     F_n = sp.Symbol("F_n")
-    # ∫ x^{n−2}(x² − 2Kx + C) = F_n − 2K F_{n−1} + C F_{n−2}
+    # F_n = K F_{n−1} + [x^{n−1} M x']_0^λ − (n − 1)∫ x^{n−2} M x'² ds, with x_λ^{n−1} = 1, x_0 = 0 (12),
+    # and ∫ x^{n−2}(x² − 2Kx + C) = F_n − 2K F_{n−1} + C F_{n−2}
     eq = sp.Eq(F_n, K * Fn(n - 1) + (1 ** (n - 1)) * M_x_prime_lambda
                - (n - 1) * (F_n - 2 * K * Fn(n - 1) + C * Fn(n - 2)))
     recurrence = sp.expand(n * sp.solve(eq, F_n)[0])

@@ -42,7 +42,8 @@ def specs() -> tuple[Spec, ...]:
                                   inputs=truth.F1_F2_inputs),
              note="F = 4KF_3 − F_4 is the function of (110)."),
         Spec(rid(170, "F"), "F/λ = (4KF_3 − F_4)/λ", src(N49, "170"), r"F/\lambda", derivation.F_over_lambda("F"),
-             deps=(rid(167, "recurrence"), *PHI), printed=printed.F, check=by_quadrature("F = 4KF_3 − F_4 (110)", "F"),
+             deps=(rid(167, "recurrence"), *PHI), printed=printed.F,
+             check=by_quadrature("F = 4KF_3 − F_4 (110)", "F"),
              defs=DEFINITIONS, kernel=kernels.F_KERNEL, readings=(printed.READ_F,),
              note="Only the K⁰ term differs from the derivation: derived − printed = −(3/8)(U_1^4 − U_1^3)."),
     )

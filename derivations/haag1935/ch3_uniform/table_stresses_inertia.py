@@ -41,7 +41,8 @@ def specs() -> tuple[Spec, ...]:
         launch_spec(181, 0, printed.shock_launch_T0),
         launch_spec(181, 1, printed.shock_launch_T_lambda),
         # ---------------------------------------------------------------- n°56–57
-        Spec(rid(182, "I"), "Moment of inertia I_λ of the blade", src("n°56", "182"), r"I_\lambda", derivation.inertia,
+        Spec(rid(182, "I"), "Moment of inertia I_λ of the blade", src("n°56", "182"), r"I_\lambda",
+             derivation.inertia,
              deps=(rid(157, "v"), rid(157, "w")), printed=printed.inertia, defs=DEFINITIONS,
              check=truth.on_blade("(1/λ)∫y² ds, y of (77) with Y = K, θ = 1, by quadrature", truth.inertia,
                                   extra={"m'": "1"}),

@@ -184,7 +184,8 @@ def Gamma_of_n(solution, env):
 
 
 def power_sum_points(level: str, dps: int) -> list[checks.Point]:
-    """S_p − S_{p−1} + kS_{p−2} from the direct powers S_p = K^p + (1 − K)^p (relative to S_{p−1} − kS_{p−2})."""
+    """S_p − S_{p−1} + kS_{p−2} from the direct powers S_p = K^p + (1 − K)^p,
+    relative to S_{p−1} − kS_{p−2}."""
     out = []
     for K_text in ("0.3", "-1.7", "2.9"):
         K_value = mp.mpf(K_text)
