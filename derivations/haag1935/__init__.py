@@ -8,10 +8,10 @@ SECTIONS = (
     Section.of(ch1_motion, "Chapter I. Equations, v and w, end loads, foci and periods (1)–(41)"),
     Section.of(ch1_variations, "Chapter I. Small variations of the periods, temperature, g (42)–(63)"),
     Section.of(ch1_launch, "Chapter I. Principal oscillation, launching, shape, fatigue, suppleness, fork (64)–(87)"),
-    Section.of(ch3_uniform, "Chapter III. The uniform blade (156)–(183)"),
+    *(Section.of(module, title) for module, title in ch3_uniform.sections()),
 )
 _CH1 = {sec.module for sec in SECTIONS[:3]}
-_CH3 = {SECTIONS[3].module}
+_CH3 = {sec.module for sec in SECTIONS[3:]}
 
 
 def _eqs(lo: int, hi: int, modules: set):
