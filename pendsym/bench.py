@@ -1,8 +1,9 @@
 """``make bench``: speed against error for the swing time of the simple pendulum.
 
-The swing time (one swing, Charbonnier's T) of θ'' + k² sin θ = 0 from rest at
+The swing time (one swing, T = π/k at small amplitude) of θ'' + k² sin θ = 0 from rest at
 −α, for α from 10⁻³ to 3 rad, by:
-  * the memoir's T(1 + α²/16), from the generated kernels of n°21 (Python and C);
+  * a memoir's small-amplitude formula, π/k + ΔT(α, k), from the generated kernel its Memoir names as
+    ``swing_correction`` (Python and C);
   * the exact swing time π/(k·AGM(1, cos α/2)) (generated C and Python kernels);
   * mpmath's ellipk, 2K(sin² α/2)/k at 15 digits;
   * mpmath odefun integration of the ODE at 15, 20 and 30 digits.
@@ -24,6 +25,7 @@ from pathlib import Path
 import mpmath as mp
 
 from .emit.kernels import compile_c
+from . import registry
 from .io import write_atomic
 
 ALPHAS = [10 ** (-3 + 3.4771 * i / 23) for i in range(24)]   # 1e-3 … 3
@@ -54,7 +56,7 @@ def _load_py(path: Path):
 POSIX = "#define _POSIX_C_SOURCE 199309L\n"   # clock_gettime under -std=c99
 C_LOOP = r"""
 #include <time.h>
-double n21_dT(double, double);
+double SWING_CORRECTION(double, double);
 double swing_time_agm(double, double);
 double loop_ns(int which, const double *alphas, int n, long reps, double k)
 {
@@ -63,7 +65,7 @@ double loop_ns(int which, const double *alphas, int n, long reps, double k)
     clock_gettime(CLOCK_MONOTONIC, &a);
     for (long r = 0; r < reps; ++r)
         for (int i = 0; i < n; ++i)
-            sink += which ? swing_time_agm(alphas[i], k) : 3.14159265358979323846 / k + n21_dT(alphas[i], k);
+            sink += which ? swing_time_agm(alphas[i], k) : 3.14159265358979323846 / k + SWING_CORRECTION(alphas[i], k);
     clock_gettime(CLOCK_MONOTONIC, &b);
     (void)sink;
     return ((b.tv_sec - a.tv_sec) * 1e9 + (b.tv_nsec - a.tv_nsec)) / ((double)reps * n);
@@ -80,13 +82,22 @@ def c_loop_time(lib, which: int) -> float:
     return min(f(which, arr, len(ALPHAS), 20000, K) for _ in range(3)) * 1e-9
 
 
+def swing_memoir() -> tuple[str, str]:
+    """(memoir key, kernel name) of the first memoir that names a swing-time correction kernel."""
+    for key, memoir in registry.memoirs().items():
+        if memoir.swing_correction:
+            return key, memoir.swing_correction
+    raise SystemExit("pendsym-bench: no memoir names a swing_correction kernel")
+
+
 def methods(generated: Path, workdir: Path):
-    ch = _load_py(generated / "python" / "charbonnier1908.py")
+    memoir, name = swing_memoir()
+    ch = _load_py(generated / "python" / f"{memoir}.py")
     per = _load_py(generated / "python" / "pendulum.py")
-    lib = compile_c(POSIX + (generated / "c" / "charbonnier1908.c").read_text().replace('#include "charbonnier1908.h"', "")
+    lib = compile_c(POSIX + (generated / "c" / f"{memoir}.c").read_text().replace(f'#include "{memoir}.h"', "")
                     + (generated / "c" / "pendulum.c").read_text().replace('#include "pendulum.h"', "")
-                    + C_LOOP, workdir)
-    c_dT = lib.n21_dT
+                    + C_LOOP.replace("SWING_CORRECTION", name), workdir)
+    c_dT = getattr(lib, name)
     c_T = lib.swing_time_agm
     for f in (c_dT, c_T):
         f.restype = ctypes.c_double
@@ -104,7 +115,7 @@ def methods(generated: Path, workdir: Path):
             return float(2 * mp.ellipk(mp.sin(mp.mpf(a) / 2) ** 2) / K)
     return [
         ("memoir T(1+α²/16), C kernel", lambda a: math.pi / K + c_dT(a, K), ("C", lib, 0), ALPHAS),
-        ("memoir T(1+α²/16), Python kernel", lambda a: math.pi / K + ch.n21_dT(a, K), 20000, ALPHAS),
+        ("memoir T(1+α²/16), Python kernel", lambda a: math.pi / K + getattr(ch, name)(a, K), 20000, ALPHAS),
         ("exact, AGM, C kernel", lambda a: c_T(a, K), ("C", lib, 1), ALPHAS),
         ("exact, AGM, Python kernel", lambda a: per.swing_time_agm(a, K), 5000, ALPHAS),
         ("mpmath ellipk (15 digits)", ellipk15, 200, ALPHAS),
@@ -171,8 +182,9 @@ def main(argv=None) -> int:
     args = p.parse_args(argv)
     rows = run(Path(args.generated))
     out = Path(args.out)
-    write_atomic(out / "charbonnier1908-period.json", json.dumps(rows, indent=1) + "\n")
-    write_atomic(out / "charbonnier1908-period.tex", tex_table(rows))
+    memoir, _ = swing_memoir()
+    write_atomic(out / f"{memoir}-period.json", json.dumps(rows, indent=1) + "\n")
+    write_atomic(out / f"{memoir}-period.tex", tex_table(rows))
     for r in rows:
         print(f"{r['method']:<36} {r['seconds_per_eval'] * 1e6:12.3f} us  max rel err {r['max_rel_error']:.2e}")
     return 0

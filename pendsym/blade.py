@@ -1,7 +1,7 @@
 """The elastic blade of a pendulum suspension, independent of any memoir.
 
 A blade of length λ has the stiffness ratio M(s) = EI/(mg) on [0, λ].  The
-functions of the small-oscillation theory (Haag 1935, ch. I, eqs. (9)–(14))
+functions of the small-oscillation theory of an elastic suspension (the blade memoir's eqs. (9)–(14))
 are the solutions v, w of
 
     M v'' − v = 0,    v'(0) = v'(λ) = −1,   w'(0) = 0,  w'(λ) = 1,       (9)–(10)
@@ -43,7 +43,7 @@ class SingularBlade(ValueError):
 
 @dataclass(frozen=True)
 class Blade:
-    """A blade: its length λ and its stiffness ratio M(s) = EI/(mg) (Haag eq. (1)).
+    """A blade: its length λ and its stiffness ratio M(s) = EI/(mg) (the blade memoir's eq. (1)).
 
     ``M`` is a number or a SymPy expression in ``var``; jumps are written with
     ``Piecewise`` and conditions comparing ``var`` with numbers.

@@ -1,7 +1,7 @@
 """First-order perturbation of the pendulum at finite amplitude (osculating α, φ).
 
 The perturbed equation is  θ'' = −ω0² sin θ + f,  f small (any function of θ,
-θ', t).  Following Cellérier (Mém. Soc. Phys. Genève t. XVIII, § 4, quoted in
+θ', t).  Following the support-sway memoir (Mém. Soc. Phys. Genève t. XVIII, § 4, quoted in
 his memoir on the supports), the free motion of amplitude α is written with the
 angle φ of
 
@@ -11,14 +11,14 @@ angle φ of
 constants keeps these relations for θ and θ' with α, φ variable (osculating
 elements); the rates α', φ' follow from a 2×2 linear system solved by SymPy.
 
-Cellérier's letters: u = μ'/(2 m g sin ½α) with f = μ'/(m h l), so
+The memoir's letters: u = μ'/(2 m g sin ½α) with f = μ'/(m h l), so
 f = 2 ω0² sin(α/2) u / h.  One swing (φ from 0 to π) gives, to first order in f:
 
     α_end − α = −(2/h) tan(α/2) ∫_0^π u sin φ / D dφ,        D = √(1 − κ² cos²φ)
     T − T0(α) = (1/(ω0 h)) ∫_0^π u cos φ / D² dφ  +  (1/ω0) ∫_0^π ∂_α(1/D) Δα(φ) dφ
 
 with κ = sin(α/2), T0(α) = ∫_0^π dφ/(ω0 D) = 2K(κ²)/ω0 and Δα(φ) the change
-of α from 0 to φ.  Cellérier's printed forms are these with the weights of the
+of α from 0 to φ.  The memoir's printed forms are these with the weights of the
 free motion (D, T0) at κ → 0: exact to first order in f and to relative
 O(sin²½α).  The modulus of the free motion is kept as a separate symbol κ so
 that this limit is a substitution, not a retyping.
@@ -35,13 +35,13 @@ import mpmath as mp
 import sympy as sp
 
 alpha = sp.Symbol("alpha", positive=True)      # osculating amplitude
-phi = sp.Symbol("phi", nonnegative=True)       # Cellérier's angle φ
+phi = sp.Symbol("phi", nonnegative=True)       # the memoir's angle φ
 psi = sp.Symbol("psi", nonnegative=True)       # dummy angle
 w0 = sp.Symbol("omega_0", positive=True)       # √(g/l)
 h = sp.Symbol("h", positive=True)              # distance pivot–centre of gravity
 f = sp.Symbol("f", real=True)                  # perturbing angular acceleration μ'/(m h l)
 kappa = sp.Symbol("kappa", positive=True)      # modulus sin(α/2) of the free motion (weights only)
-u = sp.Function("u")                           # Cellérier's u(φ) along the free motion
+u = sp.Function("u")                           # the memoir's u(φ) along the free motion
 
 
 def free_angle(a=alpha, p=phi) -> sp.Expr:
@@ -140,7 +140,7 @@ def dalpha_swing(k=kappa) -> sp.Expr:
 
 
 def alpha1(k=kappa) -> sp.Expr:
-    """Cellérier's α1: the decrease of the amplitude over one swing, −(α_end − α)."""
+    """The memoir's α1: the decrease of the amplitude over one swing, −(α_end − α)."""
     return -dalpha_swing(k)
 
 
@@ -169,7 +169,7 @@ def delta_exact() -> sp.Expr:
 
 
 def delta_leading() -> sp.Expr:
-    """δ with the free weights at κ = 0 (the isochronism term vanishes there): Cellérier's form."""
+    """δ with the free weights at κ = 0 (the isochronism term vanishes there): the memoir's form."""
     return sp.simplify(delta_direct(sp.S.Zero))
 
 

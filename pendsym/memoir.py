@@ -51,7 +51,9 @@ class Memoir:
     ``affinity``: groups of Result ids whose checks share computations (run in one worker);
     ``cost``: relative time of the memoir's checks (the scheduler starts the costliest first);
     ``kernels``: whether its kernel declarations are ready to be emitted;
-    ``headings``: the report's structure, when it differs from the sections.
+    ``headings``: the report's structure, when it differs from the sections;
+    ``swing_correction``: the name of a generated kernel f(alpha, k) giving the memoir's correction to
+    one swing's duration, which ``make bench`` sets beside the exact swing time.
     """
 
     key: str
@@ -61,6 +63,7 @@ class Memoir:
     affinity: tuple[tuple[str, ...], ...] = ()
     cost: float = 1.0
     kernels: bool = True
+    swing_correction: str | None = None
 
     @property
     def specs(self) -> tuple[Spec, ...]:

@@ -1,6 +1,6 @@
 """Equations of motion of the simple pendulum, derived, not transcribed.
 
-The general equation (Charbonnier n°2, formula (1)) for a pendulum of variable
+The general equation (the perturbation memoir's n°2, formula (1)) for a pendulum of variable
 length l(t) is   θ'' + (2/l)(dl/dt) θ' + (g/l) s(θ) = 0,   with s(θ) = sin θ,
 or s(θ) = θ in the linearized form the memoir uses for its examples.  Writing
 it as θ'' + k²θ + P = 0 with k² = g/l0 defines the perturbing term P, which is

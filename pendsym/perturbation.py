@@ -2,7 +2,7 @@
 
 The perturbed equation is  θ'' + k²θ + εφ = 0,  where φ may depend on θ, θ'
 and t.  The unperturbed motion is θ0(t) = θ_i cos kt + (ω_i/k) sin kt; with
-Charbonnier's start at rest at −α it is θ0 = −α cos kt.
+The memoirs' start at rest at −α it is θ0 = −α cos kt.
 
 Variation of constants (Duhamel) gives the first-order correction that keeps
 the initial conditions of θ0:
@@ -11,7 +11,7 @@ the initial conditions of θ0:
     θ1'(t) = −ε [E_s(t) sin kt + E_c(t) cos kt],
 
 with  E_s(t) = ∫_0^t φ(τ) sin kτ dτ  and  E_c(t) = ∫_0^t φ(τ) cos kτ dτ,
-φ being evaluated along θ0.  These are Charbonnier's integrals of n°18; his
+φ being evaluated along θ0.  These are the integrals E_s, E_c of the variation of constants; the
 general formulas of n°8–9 are rebuilt from them by :func:`turning_shift`,
 :func:`crossing_shift` and the value of θ1 or θ1' at those events.
 
@@ -24,7 +24,7 @@ import sympy as sp
 
 
 def unperturbed(t: sp.Symbol, k: sp.Expr, theta_i: sp.Expr, omega_i: sp.Expr = sp.S.Zero) -> sp.Expr:
-    """θ0(t) with θ0(0) = θ_i and θ0'(0) = ω_i (Charbonnier n°18: θ_i = −α, ω_i = 0)."""
+    """θ0(t) with θ0(0) = θ_i and θ0'(0) = ω_i (a start at rest: θ_i = −α, ω_i = 0)."""
     return theta_i * sp.cos(k * t) + omega_i / k * sp.sin(k * t)
 
 
@@ -34,7 +34,7 @@ def along(phi: sp.Expr, theta: sp.Symbol, dtheta: sp.Symbol, theta0: sp.Expr, t:
 
 
 def _phase_integral(phi_t: sp.Expr, weight, t: sp.Symbol, k: sp.Expr) -> sp.Expr:
-    """∫_0^t φ(τ) w(kτ) dτ, computed in the phase x = kτ as Charbonnier does (∫ … d(kt))."""
+    """∫_0^t φ(τ) w(kτ) dτ, computed in the phase x = kτ as the memoir does (∫ … d(kt))."""
     x = sp.Dummy("x", real=True)
     integrand = sp.expand(sp.expand_trig(phi_t.subs(t, x / k) * weight(x)))
     # conds="none": the generic branch, valid for every k that is not a resonance of φ
@@ -43,12 +43,12 @@ def _phase_integral(phi_t: sp.Expr, weight, t: sp.Symbol, k: sp.Expr) -> sp.Expr
 
 
 def E_s(phi_t: sp.Expr, t: sp.Symbol, k: sp.Expr) -> sp.Expr:
-    """E_s(t) = ∫_0^t φ sin kτ dτ  (Charbonnier n°18, p. 220)."""
+    """E_s(t) = ∫_0^t φ sin kτ dτ  (the memoir's n°18)."""
     return _phase_integral(phi_t, sp.sin, t, k)
 
 
 def E_c(phi_t: sp.Expr, t: sp.Symbol, k: sp.Expr) -> sp.Expr:
-    """E_c(t) = ∫_0^t φ cos kτ dτ  (Charbonnier n°18, p. 220)."""
+    """E_c(t) = ∫_0^t φ cos kτ dτ  (the memoir's n°18)."""
     return _phase_integral(phi_t, sp.cos, t, k)
 
 

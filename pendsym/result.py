@@ -16,7 +16,7 @@ import sympy as sp
 class Source:
     """Where a result stands in its memoir."""
 
-    memoir: str                 # key, e.g. "charbonnier1908"
+    memoir: str                 # the memoir's key (the first part of every Result id)
     para: str                   # paragraph and sub-item, e.g. "n°21, 5°"
     page: int | None = None     # page of the printed memoir
     eq: str | None = None       # equation number, where the memoir has one

@@ -4,7 +4,7 @@ A scene file is TOML (read with the standard library's tomllib, never
 evaluated):
 
     name = "…"
-    results = ["cellerier.delta_static", …]
+    results = ["<memoir>.<result>", …]
     [parameters]          # values of the Results' symbols, by name, SI units
     K = 1.0e-7
 

@@ -1,6 +1,6 @@
 """Small oscillations of a rigid pendulum on an elastic blade, computed without v and w.
 
-This is the independent truth for Haag 1935, chapter I.  It starts again from
+This is the independent truth for the small-oscillation theory of an elastic suspension.  It starts again from
 the governing equations (2)–(6) of n°1, linearised (θ, φ, β, Y of the first
 order, α = λ, X = 1, x = s):
 
@@ -11,7 +11,7 @@ position (β = y(λ), θ = φ(λ)): the deflection is linear in the two unknown 
 loads c = N − β and Y, so two initial-value integrations (c = 1, Y = 0) and
 (c = 0, Y = 1) by mpmath's Taylor solver ``odefun``, segment by segment across
 the jumps of M, and a 2×2 linear solve give the end loads (Y, N) as a linear
-function of (β, θ): the 2×2 *stiffness* of the suspension.  Haag's functions
+function of (β, θ): the 2×2 *stiffness* of the suspension.  The theory's functions
 v, w and their two-point conditions (10) are never used.
 
 The rigid pendulum (mass m, centre of gravity G with AG = a, radius of
@@ -168,7 +168,7 @@ def mass_matrix(a, R, m=1) -> mp.matrix:
 def modes(sus: Suspension, a, R, g) -> tuple[Mode, Mode]:
     """The two normal modes of K q = n² 𝕄 q (mpmath eig), principal (node above G, z < 0) first.
 
-    Haag calls the node above G the upper focus F' (z' < 0): it stays fixed in the
+    The theory calls the node above G the upper focus F' (z' < 0): it stays fixed in the
     principal oscillation (n°16); the other mode, with F fixed, is the parasitic vibration.
     """
     with mp.workdps(sus.wdps):

@@ -1,6 +1,6 @@
 """The Wallis-type integrals J_m(y) = ∫_0^y cos^{m+1} y dy and their recurrence.
 
-Charbonnier n°20 (p. 222): (m+1) J_m = sin y cos^m y + m J_{m−2},
+The recurrence of the monomials (the memoir's n°20): (m+1) J_m = sin y cos^m y + m J_{m−2},
 J_{−1} = y, J_0 = sin y; and for odd m, J_m(π) = π·1·3·5…m / (2·4·6…(m+1)).
 The proofs here hold for a symbolic m, not for sampled values.
 """
