@@ -145,8 +145,14 @@ def _rewire(pl: Plan, built: dict[str, Result]) -> dict[str, Result]:
 
 # ----------------------------------------------------------------- compare and check
 def _assess_job(job: tuple, level: str, keys_of: Mapping[str, str]) -> list:
-    """A job of one worker: the comparison and check of each Result, cached."""
-    return [cache.memo(keys_of[r.id], functools.partial(pipeline.assessed, r, level)) for r in job]
+    """A job of one worker: the comparison and check of each Result (cached), with the seconds
+    each took (0 from the cache)."""
+    out = []
+    for r in job:
+        start = time.monotonic()
+        value = cache.memo(keys_of[r.id], functools.partial(pipeline.assessed, r, level))
+        out.append((value, time.monotonic() - start))
+    return out
 
 
 def compare_and_check(pl: Plan, built: Mapping[str, Result], log: Log,
@@ -168,10 +174,14 @@ def compare_and_check(pl: Plan, built: Mapping[str, Result], log: Log,
             progress(done_ids[0], len(pl.order))
     outs = schedule.per_result(jobs, list(jobs), functools.partial(_assess_job, level=pl.level, keys_of=assessed_key),
                                progress=tick)
-    done = {r.id: o for job, out in zip(jobs.values(), outs) for r, o in zip(job, out)}
+    done = {r.id: o for job, out in zip(jobs.values(), outs) for r, (o, _) in zip(job, out)}
+    took = {r.id: t for job, out in zip(jobs.values(), outs) for r, (_, t) in zip(job, out)}
     records = [pipeline.Record(built[i], *done[i][0], done[i][1]) for i in pl.order]
     log(f"checked {len(todo)} results anew ({len(pl.order) - len(todo)} from the cache) "
         f"in {time.monotonic() - start:.0f} s" + (f": {_sections(pl, todo)}" if todo else ""))
+    if todo:
+        slow = sorted(took.items(), key=lambda kv: -kv[1])[:5]
+        log(f"  {sum(took.values()):.0f} s of checks; slowest: " + ", ".join(f"{i} {t:.0f} s" for i, t in slow))
     return pipeline.fill_chains(records)
 
 
