@@ -19,9 +19,8 @@ import sympy as sp
 from pendsym import checks, verify
 from pendsym.result import Reading, Spec
 from .common import read_l_as_t, rid, src
-from .symbols import C, P, Q, g, h, l, m, mu_p, theta, thetad, thetadd, x1dd, x1s, y1dd, y1s
+from .symbols import C, P, Q, g, h, l, m, mu_p, t, theta, thetad, thetadd, x1dd, x1s, y1dd, y1s
 
-t = sp.Symbol("t", real=True)
 theta_t, x1_t, y1_t = sp.Function("theta")(t), sp.Function("x_1")(t), sp.Function("y_1")(t)
 xi, eta = sp.symbols("xi eta", real=True)
 I_xixi, I_etaeta, I_xieta = sp.symbols("I_xixi I_etaeta I_xieta", real=True)

@@ -15,7 +15,7 @@ import sympy as sp
 from pendsym import checks, finite_amplitude, verify
 from pendsym.result import Spec
 from . import truth
-from .common import H_TRUTH, Geometric, printed, proof_of, rid, src
+from .common import H_TRUTH, printed, proof_of, rid, src
 from .pressures import reduced
 from .static_support import KS, mu_prime_with, static_truth_text, u_of_mu
 from .symbols import K, alpha, g, h, l, m, phi, theta, thetad, thetadd, u

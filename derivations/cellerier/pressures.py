@@ -13,8 +13,8 @@ from pendsym.result import KernelArg, KernelSpec, Reading, Spec
 from pendsym.truth import turning_time
 from . import truth
 from .common import Geometric, printed, rid, src
-from .equation import pressures_exact, symbolize, t, theta_t
-from .symbols import F, Fp, alpha, g, h, l, m, theta, thetad, thetadd, x1dd, y1dd
+from .equation import pressures_exact, symbolize, theta_t
+from .symbols import F, Fp, alpha, g, h, l, m, t, theta, thetad, thetadd, x1dd, y1dd
 
 MGH_L = m * g * h / l
 
