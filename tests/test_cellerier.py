@@ -7,7 +7,7 @@ from pendsym import checks, pipeline, registry
 
 SPECS = registry.all_specs(["cellerier"])
 CHECKED = sorted(i for i, s in SPECS.items() if s.check is not None)
-INCIPITS = {f"¶ « {words} … »" for words in common.PARAGRAPHS.values()}
+INCIPITS = {f"« {words} … »" for words in common.PARAGRAPHS.values()}
 
 
 @pytest.fixture(scope="module")

@@ -25,7 +25,7 @@ PARAGRAPHS = {
     "relative_axes": "En nommant x', y', les coordonnées de dm par rapport à des axes O'X', O'Y'",
     "inertia": "Nommant ensuite r la distance de l'élément dm au couteau",
     "length_l": "En posant l = C/(mh), on pourra l'écrire",
-    "earlier_memoir": "Cette équation coïncide avec celle qui se trouve au § 4 d'un mémoire sur le pendule",
+    "earlier_memoir": "Cette équation coïncide avec celle qui se trouve",
     "substitution": "En substituant les valeurs de μ' et de u, il en résulte, dans le cas actuel",
     "pressures": "Pour cela reprenons les deux premières équations du mouvement",
     "pivot_neglected": "Ces valeurs des pressions P et Q ne sont point très-petites",
@@ -51,7 +51,7 @@ def rid(name: str) -> str:
 
 def src(paragraph: str, quote: str) -> Source:
     """The source of a Result: the paragraph it stands under (by its incipit) and a quote of the text."""
-    return Source(MEMOIR, f"¶ « {PARAGRAPHS[paragraph]} … »", None, None, quote)
+    return Source(MEMOIR, f"« {PARAGRAPHS[paragraph]} … »", None, None, quote)
 
 
 def printed(expr: sp.Basic):

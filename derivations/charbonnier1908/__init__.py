@@ -36,13 +36,13 @@ MEMOIR = Memoir(
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), (
         ("General formulas (n°8–9, not in the file, rebuilt)", paragraphs(8, 9)),
-        ("§IV. The perturbing function depends on the angle: general formulas, monomials, J_m (n°18–20)",
+        ("IV. The perturbing function depends on the angle: general formulas, monomials, J_m (n°18–20)",
          paragraphs(18, 20)),
         ("n°21. Second term of the period", paragraphs(21, 21)),
         ("n°22. Thread winding on a curve", paragraphs(22, 22)),
         ("n°23. The cycloidal pendulum", paragraphs(23, 23)),
-        ("§V. Pendulum with an elastic thread (n°24–26)", paragraphs(24, 26)),
-        ("§VI. Pendulum of variable length (n°27–35)", paragraphs(27, 35)),
+        ("V. Pendulum with an elastic thread (n°24–26)", paragraphs(24, 26)),
+        ("VI. Pendulum of variable length (n°27–35)", paragraphs(27, 35)),
     )),
     cost=1.0,
 )

@@ -185,10 +185,10 @@ CURVE_CHECK = checks.Order(   # at the first point C of the model, l_C against l
 # ----------------------------------------------------------------- the Result table
 def specs() -> tuple[Spec, ...]:
     return (
-        Spec(rid(27, "l"), "Length of the cable unwound at constant speed (the problem of §VI)", src("n°27", 233),
+        Spec(rid(27, "l"), "Length of the cable unwound at constant speed (the statement of the problem)", src("n°27", 233),
              "l", length_law, printed=printed(PRINTED["l"]), definition=True, check=checks.Definition(),
              note=("Énoncé du problème: a bucket going down a well swings while the cable unwinds at a constant, "
-                   "very small speed; a is that speed relative to l0. The law of the model every check of §VI "
+                   "very small speed; a is that speed relative to l0. The law of the model every check of n°28–35 "
                    "integrates.")),
     ) + chain.specs(N27) + (
         Spec(rid(32, "mean_length"), "T + ΔT is the swing of a pendulum of the mean length", src("n°32", 236), "L",
