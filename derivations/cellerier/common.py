@@ -17,7 +17,7 @@ from pendsym import checks, verify
 from pendsym.result import Reading, Source
 
 MEMOIR = "cellerier"
-DPS, CONFIRM_DPS = checks.DPS, checks.CONFIRM_DPS   # working and confirming digits of a truth
+DPS = checks.DPS          # working digits of a truth (the engine confirms it at checks.CONFIRM_DPS)
 H_TRUTH = "0.2"            # h/l of the model pendulum on its support (m = g = l = 1, C = m h l)
 
 # The paragraphs of the memoir that hold a Result, in the order of the text, by their opening words.

@@ -15,7 +15,7 @@ import sympy as sp
 from pendsym import checks, verify
 from pendsym.result import KernelArg, KernelSpec, Reading, Spec
 from . import truth
-from .common import H_TRUTH, Geometric, printed, rid, src
+from .common import DPS, H_TRUTH, Geometric, printed, rid, src
 from .symbols import K, M, T, a, c, g, gamma, l, n, rho, rho_p, t, x, z
 
 amplitude = sp.Symbol("A")     # the amplitude of the particular solution, solved for
@@ -99,7 +99,7 @@ MODAL_TEXT = "modal expansion of the forced bar at z = c (mpmath nsum)"
 def particular_check(result, level):
     f = sp.lambdify((z, t, rho), result.derived.subs(UNIT_BAR), "mpmath")
     pairs = []
-    with mp.workdps(30):
+    with mp.workdps(DPS):
         for xv, zf in (("0.3", "1"), ("1.2", "0.6"), ("2.5", "0.35")):
             pairs.append((f"x={xv},z={zf}", f(mp.mpf(zf), 0, mp.mpf(xv)), modal_tip(mp.mpf(xv), zf)))
     return verify.value_check(truth_desc="modal expansion Σ 2 sin λ_k c sin λ_k z/(λ_k² − ρ²), λ_k = (k+½)π "
@@ -146,12 +146,12 @@ def lumped_ratio_check(result, level):
     """The relative correction (δ_M − δ_0)/δ_0 against KMg/l, for K ≤ 0.02."""
     f = sp.lambdify(K, result.derived.subs({M: 1, g: 1, l: 1}), "mpmath")
     ks = KS_LUMPED(level)
-    with mp.workdps(30):
+    with mp.workdps(DPS):
         pairs = []
         for k in ks:
             if k <= mp.mpf("0.021"):
-                d0 = truth.delta_measured("0.003", mp.nstr(k, 40), "0", 30, h_val=H_TRUTH)
-                pairs.append((f"K={mp.nstr(k, 4)}", f(k), lumped_difference(k, 30) / d0))
+                d0 = truth.delta_measured("0.003", mp.nstr(k, 40), "0", DPS, h_val=H_TRUTH)
+                pairs.append((f"K={mp.nstr(k, 4)}", f(k), lumped_difference(k, DPS) / d0))
     return verify.value_check(truth_desc=LUMPED_TEXT + "; relative correction (δ_M − δ_0)/δ_0 against KMg/l",
                               pairs=pairs, tol=mp.mpf("0.1") * mp.mpf("0.021"), kind="value",
                               note="relative correction KMg/l to within 10 % for K ≤ 0.02")

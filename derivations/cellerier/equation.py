@@ -18,7 +18,7 @@ import sympy as sp
 
 from pendsym import checks, verify
 from pendsym.result import Reading, Spec
-from .common import read_l_as_t, rid, src
+from .common import DPS, read_l_as_t, rid, src
 from .symbols import C, P, Q, g, h, l, m, mu_p, t, theta, thetad, thetadd, x1dd, x1s, y1dd, y1s
 
 theta_t, x1_t, y1_t = sp.Function("theta")(t), sp.Function("x_1")(t), sp.Function("y_1")(t)
@@ -158,7 +158,7 @@ def newton_check(what: str):
     """P, Q, μ' or the equation against Newton's sums for three point masses (numerical derivatives)."""
     def check(result, level):
         pairs = []
-        with mp.workdps(30):
+        with mp.workdps(DPS):
             mt, hh, CC, beta = body_constants()
             gv = mp.mpf("9.8")
             for s in (mp.mpf("0.4"), mp.mpf("1.7")):

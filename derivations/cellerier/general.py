@@ -17,7 +17,7 @@ import sympy as sp
 from pendsym import checks, finite_amplitude, verify
 from pendsym.result import Reading, Spec
 from . import truth
-from .common import Geometric, rid, src
+from .common import DPS, Geometric, rid, src
 from .symbols import alpha, h, phi, u
 
 U_TESTS = (sp.Lambda(phi, sp.cos(phi) + phi**2 / 5), sp.Lambda(phi, sp.sin(2 * phi) + sp.Rational(1, 3)))
@@ -38,7 +38,7 @@ def alpha1_printed() -> sp.Expr:
 
 # ----------------------------------------------------------------- checks: θ'' = −sin θ + εF integrated
 @lru_cache(maxsize=None)
-def first_order(key: str, alpha_val: str, dps: int = 30):
+def first_order(key: str, alpha_val: str, dps: int = DPS):
     """The exact first-order δ, α1 of the test forcing ``key`` at amplitude α (finite_amplitude)."""
     with mp.workdps(dps):
         return finite_amplitude.swing_first_order(truth.time_form(key, alpha_val), alpha_val, dps=dps)

@@ -15,7 +15,7 @@ import sympy as sp
 from pendsym import checks, finite_amplitude, verify
 from pendsym.result import Spec
 from . import truth
-from .common import H_TRUTH, printed, proof_of, rid, src
+from .common import DPS, H_TRUTH, printed, proof_of, rid, src
 from .pressures import reduced
 from .static_support import KS, mu_prime_with, static_truth_text, u_of_mu
 from .symbols import K, alpha, g, h, l, m, phi, theta, thetad, thetadd, u
@@ -47,7 +47,7 @@ def forcing_numeric(hh: str):
 @lru_cache(maxsize=None)
 def first_order_support(alpha_val: str, hh: str = H_TRUTH) -> dict:
     """Exact first-order δ, α1 per unit K for the static support (pendsym.finite_amplitude)."""
-    return finite_amplitude.swing_first_order(forcing_numeric(hh), alpha_val, 1, hh, dps=30)
+    return finite_amplitude.swing_first_order(forcing_numeric(hh), alpha_val, 1, hh, dps=DPS)
 
 
 def u_of_support() -> sp.Expr:

@@ -12,7 +12,7 @@ from pendsym import checks, verify
 from pendsym.result import KernelArg, KernelSpec, Reading, Spec
 from pendsym.truth import turning_time
 from . import truth
-from .common import Geometric, printed, rid, src
+from .common import DPS, Geometric, printed, rid, src
 from .equation import pressures_exact, symbolize, theta_t
 from .symbols import F, Fp, alpha, g, h, l, m, t, theta, thetad, thetadd, x1dd, y1dd
 
@@ -111,8 +111,8 @@ def reduced_check(which: int):
     """P or Q against −m(h cos θ)'', −m(h sin θ)'' of the integrated swing."""
     def check(result, level):
         pairs = []
-        with mp.workdps(30):
-            traj = truth.free_swing_trajectory("0.8", 30)
+        with mp.workdps(DPS):
+            traj = truth.free_swing_trajectory("0.8", DPS)
             f = sp.lambdify((theta, thetad, thetadd, m, h), result.derived, "mpmath")
             for s in (mp.mpf("0.5"), mp.mpf("1.9")):
                 th, w = traj(s)
@@ -126,8 +126,8 @@ def reduced_check(which: int):
 def projection_points(along: bool):
     """Points of the F (along O'G') or F' (across) check: Newton's P, Q projected, on the integrated swing."""
     def points(level, dps):
-        with mp.workdps(30):
-            traj = truth.free_swing_trajectory("0.8", 30)
+        with mp.workdps(DPS):
+            traj = truth.free_swing_trajectory("0.8", DPS)
             for s in (mp.mpf("0.5"), mp.mpf("1.9")):
                 th, w = traj(s)
                 P, Q = truth.newton_pressures(traj, s)
@@ -141,7 +141,7 @@ def projection_check(along: bool) -> checks.Values:
     return checks.Values(
         truth=FREE_TEXT + "; P, Q = −m(h cos θ)'', −m(h sin θ)'' by numerical differentiation; "
                           "F = projection on O'G', F' across",
-        points=projection_points(along), tol=mp.mpf("1e-10"), params=(("alpha", "0.8"),), work_dps=30)
+        points=projection_points(along), tol=mp.mpf("1e-10"), params=(("alpha", "0.8"),), work_dps=DPS)
 
 
 def max_on_trajectory(alpha_val: str, fn, dps: int):
@@ -178,8 +178,8 @@ def Q_on_swing(th, w):           # Q/(mh)
 def max_value_check(fn, what: str):
     def check(result, level):
         f = sp.lambdify(alpha, result.derived.subs({m: 1, g: 1, h: 1, l: 1}), "mpmath")
-        with mp.workdps(30):
-            pairs = [(f"alpha={a}", f(mp.mpf(a)), max_on_trajectory(a, fn, 30)) for a in ("0.3", "1.2")]
+        with mp.workdps(DPS):
+            pairs = [(f"alpha={a}", f(mp.mpf(a)), max_on_trajectory(a, fn, DPS)) for a in ("0.3", "1.2")]
         return verify.value_check(truth_desc=f"max over one integrated swing of {what} (θ'' = −sin θ, mpmath odefun; "
                                   "max refined by findroot)", pairs=pairs, tol=mp.mpf("1e-20"), kind="value")
     return check

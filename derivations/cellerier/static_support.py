@@ -12,7 +12,7 @@ import sympy as sp
 from pendsym import checks, finite_amplitude, verify
 from pendsym.result import KernelArg, KernelSpec, Reading, Spec
 from . import truth
-from .common import H_TRUTH, Geometric, printed, read_l_as_t, rid, series_leading, src
+from .common import DPS, H_TRUTH, Geometric, printed, read_l_as_t, rid, series_leading, src
 from .pressures import on_free
 from .symbols import K, alpha, g, h, l, m, phi, theta, u, x1dd, y1dd
 
@@ -124,8 +124,8 @@ DELTA_STATIC_CHECK = checks.Order(   # printed = derived: both fitted
 def Q_static_check(result, level):
     f = sp.lambdify((theta, alpha), result.derived.subs({m: 1, g: 1, h: 1, l: 1}), "mpmath")
     pairs = []
-    with mp.workdps(30):
-        traj = truth.free_swing_trajectory("0.8", 30)
+    with mp.workdps(DPS):
+        traj = truth.free_swing_trajectory("0.8", DPS)
         for s in (mp.mpf("0.5"), mp.mpf("1.9")):
             Q_newton = -mp.diff(lambda x: mp.sin(traj(x)[0]), s, 2, h=mp.mpf("1e-7"))
             pairs.append((f"t={s}", f(traj(s)[0], mp.mpf("0.8")), Q_newton))
@@ -142,7 +142,7 @@ def is_first_degree(expr: sp.Expr) -> bool:
 def sin_theta_check(result, level):
     f = sp.lambdify((alpha, phi), result.derived, "mpmath")
     pairs = []
-    with mp.workdps(30):
+    with mp.workdps(DPS):
         for a, ph in (("0.4", "0.3"), ("1.9", "2.2"), ("1.0", "1.4")):
             A, PH = mp.mpf(a), mp.mpf(ph)
             target = mp.cos(A) * mp.cos(PH) ** 2 + mp.sin(PH) ** 2
@@ -154,7 +154,7 @@ def sin_theta_check(result, level):
 
 
 def radical_check(result, level):
-    with mp.workdps(30):
+    with mp.workdps(DPS):
         a = 2 * mp.pi / 180
         worst = max(1 - mp.sqrt(1 - mp.sin(a / 2) ** 2 * mp.cos(mp.pi * i / 200) ** 2) for i in range(201))
         return verify.value_check(truth_desc="largest 1 − √(1 − sin²1° cos²φ) over 201 points of [0, π]",

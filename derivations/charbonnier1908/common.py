@@ -10,7 +10,7 @@ from pendsym import checks, verify
 from pendsym.result import KernelArg, Reading, Source
 
 MEMOIR = "charbonnier1908"
-DPS, CONFIRM_DPS = checks.DPS, checks.CONFIRM_DPS   # working and confirming digits of a truth
+DPS = checks.DPS          # working digits of a truth (the engine confirms it at checks.CONFIRM_DPS)
 K_CHECK = "1.3"          # k of the worked examples' integrations
 ALPHA_CHECK = "0.3"      # amplitude of an integration whose small parameter is not α
 K_OSCILLATOR, ALPHA_OSCILLATOR = "1.7", "0.4"   # θ'' + k²θ + εφ = 0 of the checks of n°8–9 and n°19–20

@@ -11,7 +11,7 @@ from pendsym.result import KernelArg, KernelSpec, Reading, Spec
 from pendsym.truth import turning_time
 from . import chain, truth
 from .chain import Example
-from .common import ALPHA, ALPHA_CHECK, K, K_CHECK, L0, RATE, READ_RATE, Geometric, printed, rid, src
+from .common import ALPHA, ALPHA_CHECK, DPS, K, K_CHECK, L0, RATE, READ_RATE, Geometric, printed, rid, src
 from .symbols import DEF_ITEMS, DEFS, T, a, alpha, cos_kt, dtheta, k, kt, l0, omega, sin_kt, t, theta
 
 R = sp.Rational
@@ -178,7 +178,7 @@ C_LENGTH_CHECK = checks.Order(
     truth_desc=GROWING + "; the second turning point C", params=FIXED)
 CURVE_CHECK = checks.Order(   # at the first point C of the model, l_C against l(ω_C) of the curve
     param="a", values=RATES, truth=lambda p, dps: C_points(p, dps, 1)[0][0],
-    at=lambda expr, p: at_rate(expr, p, omega=C_points(p, 30, 1)[0][1]), expected=2, band=0.3,
+    at=lambda expr, p: at_rate(expr, p, omega=C_points(p, DPS, 1)[0][1]), expected=2, band=0.3,
     truth_desc=GROWING + "; (l_C, ω_C) at the second turning point", params=FIXED)
 
 
