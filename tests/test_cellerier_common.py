@@ -8,7 +8,7 @@ def test_ids_and_locators():
     assert common.rid("delta_static") == "cellerier.delta_static"
     source = common.src("pressures", "Q = −m d²·(y1 + h sin θ)/dt²")
     assert source.memoir == "cellerier" and source.page is None and source.eq is None
-    assert source.para == "¶ « Pour cela reprenons les deux premières équations du mouvement … »"
+    assert source.para == "« Pour cela reprenons les deux premières équations du mouvement … »"
     assert source.quote.startswith("Q = ")
 
 

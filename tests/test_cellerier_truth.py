@@ -1,10 +1,9 @@
 """derivations.cellerier.truth: the pendulum on a spring, the free pendulum, Newton's pressures."""
 import mpmath as mp
-import pytest
 import sympy as sp
 
 from derivations.cellerier import truth
-from derivations.cellerier.symbols import C, K, M, g, h, m, theta, thetadd, x1dd, y1dd
+from derivations.cellerier.symbols import C, g, h, m, theta, x1dd, y1dd
 from pendsym import registry
 
 

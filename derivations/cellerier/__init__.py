@@ -1,17 +1,27 @@
-"""Ch. Cellérier, Mouvement simultané d'un pendule et de ses supports."""
+"""Ch. Cellérier, Mouvement simultané d'un pendule et de ses supports.
+
+Sections, in the order of the text: the equation of motion on a moving knife edge
+(equation.py), the general formulas of the earlier memoir (general.py), the pressures on the
+knife edge (pressures.py), the static support y1 = KQ (static_support.py) and the terms its
+leading substitutions neglect (neglected_terms.py), the support as an elastic bar
+(elastic_bar.py), δ in practice and the worked example (practical.py).  Shared helpers:
+common.py (ids, locators, readings, precision) and symbols.py; the truth models: truth.py.
+"""
 from pendsym.memoir import Memoir, Section
 
-from . import elastic_bar, equation, general, pressures, static_support
+from . import common, elastic_bar, equation, general, neglected_terms, practical, pressures, static_support
 
 MEMOIR = Memoir(
-    key="cellerier",
+    key=common.MEMOIR,
     title="Ch. Cellérier, Mouvement simultané d'un pendule et de ses supports",
     sections=(
         Section.of(equation, "The equation of motion of a pendulum on a moving support"),
         Section.of(general, "Perturbation at finite amplitude: δ and α1 (the earlier memoir, rebuilt)"),
         Section.of(pressures, "The pressures on the knife edge"),
         Section.of(static_support, "A support of static compliance K"),
+        Section.of(neglected_terms, "The neglected terms: δ at finite amplitude and the change of amplitude"),
         Section.of(elastic_bar, "The support as an elastic bar"),
+        Section.of(practical, "δ in practice: the test force and the worked example"),
     ),
     # Checks that integrate the same trajectories (lru-cached in derivations.cellerier.truth): each
     # group runs in one worker so that the second reuses the first's integrations.

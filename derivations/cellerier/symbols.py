@@ -1,16 +1,16 @@
 """Cellérier's symbols, with their assumptions (Mouvement simultané d'un pendule et de ses supports)."""
 import sympy as sp
 
-from pendsym import finite_amplitude as fa
+from pendsym import finite_amplitude
 
 t = sp.Symbol("t", real=True)                    # time
 m = sp.Symbol("m", positive=True)                # mass of the pendulum
 g = sp.Symbol("g", positive=True)
-h = fa.h                                         # OG = O'G', pivot to centre of gravity
+h = finite_amplitude.h                           # OG = O'G', pivot to centre of gravity
 C = sp.Symbol("C", positive=True)                # moment of inertia about the knife edge
 l = sp.Symbol("l", positive=True)                # l = C/(m h), length of the simple pendulum
-alpha = fa.alpha                                 # amplitude α
-phi = fa.phi                                     # angle φ of cos θ = cos α cos²φ + sin²φ
+alpha = finite_amplitude.alpha                   # amplitude α
+phi = finite_amplitude.phi                       # angle φ of cos θ = cos α cos²φ + sin²φ
 theta = sp.Symbol("theta", real=True)            # θ as a variable
 thetad = sp.Symbol("thetadot", real=True)        # θ'
 thetadd = sp.Symbol("thetaddot", real=True)      # θ''
@@ -18,7 +18,7 @@ x1dd = sp.Symbol("x1ddot", real=True)            # x1''
 y1dd = sp.Symbol("y1ddot", real=True)            # y1''
 x1s, y1s = sp.symbols("x1 y1", real=True)        # pivot coordinates as variables
 mu_p = sp.Symbol("mu'", real=True)               # μ'
-u = fa.u                                         # u(φ) = μ'/(2 m g sin ½α)
+u = finite_amplitude.u                           # u(φ) = μ'/(2 m g sin ½α)
 P, Q = sp.symbols("P Q", real=True)              # pressure components (beyond mg) on the support
 F, Fp = sp.Symbol("F", real=True), sp.Symbol("F'", real=True)
 K = sp.Symbol("K", positive=True)                # static compliance y1 = K Q

@@ -1,4 +1,6 @@
-"""The independent truth for Cellérier: a rigid pendulum whose knife edge rides on a spring.
+"""The independent truth for Cellérier: a rigid pendulum whose knife edge rides on a spring;
+the free pendulum, whose integrated swing gives Newton's pressures on a fixed knife edge; and a
+pendulum under a test forcing, for the general formulas of the earlier memoir.
 
 Model: a rigid body (mass m, centre of gravity at distance h from the knife
 edge, moment of inertia C about it) swings about a knife edge O' that moves
@@ -32,31 +34,31 @@ import sympy as sp
 from pendsym import truth
 from .symbols import C, K, M, g, h, m
 
-t_ = sp.Symbol("t", real=True)
-th_f, y_f = sp.Function("theta")(t_), sp.Function("y1")(t_)
-S, Cc, W, Y, V = sp.symbols("S C_theta W Y V", real=True)     # sin θ, cos θ, θ', y1, y1'
-A_th, A_y = sp.symbols("A_theta A_y", real=True)                  # θ'', y1''
+time = sp.Symbol("t", real=True)
+theta_f, y_f = sp.Function("theta")(time), sp.Function("y1")(time)
+sin_th, cos_th, w_th, y1_s, y1dot_s = sp.symbols("S C_theta W Y V", real=True)   # sin θ, cos θ, θ', y1, y1'
+theta_acc, y1_acc = sp.symbols("A_theta A_y", real=True)                              # θ'', y1''
 
 
 @lru_cache(maxsize=None)
 def equations() -> tuple[sp.Expr, sp.Expr]:
     """Euler–Lagrange equations E_θ = 0, E_y = 0 in the symbols θ'' → A_θ, y1'' → A_y."""
-    xG = h * sp.cos(th_f)                      # vertical (downward) coordinate of G
-    yG = y_f + h * sp.sin(th_f)
-    kin = m / 2 * (sp.diff(xG, t_) ** 2 + sp.diff(yG, t_) ** 2) + (C - m * h**2) / 2 * sp.diff(th_f, t_) ** 2
-    kin += M / 2 * sp.diff(y_f, t_) ** 2
+    xG = h * sp.cos(theta_f)                      # vertical (downward) coordinate of G
+    yG = y_f + h * sp.sin(theta_f)
+    kin = m / 2 * (sp.diff(xG, time) ** 2 + sp.diff(yG, time) ** 2) + (C - m * h**2) / 2 * sp.diff(theta_f, time) ** 2
+    kin += M / 2 * sp.diff(y_f, time) ** 2
     pot = -m * g * xG + y_f**2 / (2 * K)
     L = kin - pot
     eqs = []
-    for q in (th_f, y_f):
-        e = sp.diff(sp.diff(L, sp.diff(q, t_)), t_) - sp.diff(L, q)
+    for q in (theta_f, y_f):
+        e = sp.diff(sp.diff(L, sp.diff(q, time)), time) - sp.diff(L, q)
         eqs.append(e)
-    rep = {sp.diff(th_f, t_, 2): A_th, sp.diff(y_f, t_, 2): A_y}
-    rep2 = {sp.diff(th_f, t_): W, sp.diff(y_f, t_): V}
+    rep = {sp.diff(theta_f, time, 2): theta_acc, sp.diff(y_f, time, 2): y1_acc}
+    rep2 = {sp.diff(theta_f, time): w_th, sp.diff(y_f, time): y1dot_s}
     out = []
     for e in eqs:
-        e = e.subs(rep).subs(rep2).subs(y_f, Y)
-        e = e.subs({sp.sin(th_f): S, sp.cos(th_f): Cc})
+        e = e.subs(rep).subs(rep2).subs(y_f, y1_s)
+        e = e.subs({sp.sin(theta_f): sin_th, sp.cos(theta_f): cos_th})
         out.append(sp.expand(e))
     return tuple(out)
 
@@ -64,15 +66,15 @@ def equations() -> tuple[sp.Expr, sp.Expr]:
 @lru_cache(maxsize=None)
 def accelerations() -> tuple[sp.Expr, sp.Expr]:
     """(θ'', y1'') solved from the Euler–Lagrange equations (mass matrix inverted)."""
-    sol = sp.solve(list(equations()), [A_th, A_y], dict=True)
+    sol = sp.solve(list(equations()), [theta_acc, y1_acc], dict=True)
     if len(sol) != 1:
         raise ValueError("singular mass matrix")
-    return sp.simplify(sol[0][A_th]), sp.simplify(sol[0][A_y])
+    return sp.simplify(sol[0][theta_acc]), sp.simplify(sol[0][y1_acc])
 
 
-def _lie(expr: sp.Expr, th_dd: sp.Expr) -> sp.Expr:
+def lie_derivative(expr: sp.Expr, th_dd: sp.Expr) -> sp.Expr:
     """d/dt of a function of (θ, θ') along a flow with θ'' = th_dd (θ kept as sin, cos)."""
-    return sp.diff(expr, S) * Cc * W - sp.diff(expr, Cc) * S * W + sp.diff(expr, W) * th_dd
+    return sp.diff(expr, sin_th) * cos_th * w_th - sp.diff(expr, cos_th) * sin_th * w_th + sp.diff(expr, w_th) * th_dd
 
 
 @lru_cache(maxsize=None)
@@ -85,18 +87,18 @@ def slow_manifold() -> tuple[sp.Expr, sp.Expr]:
     K²-coefficient (second derivative at K = 0, no simplification needed).
     """
     E_th, E_y = equations()
-    th_dd0 = sp.solve(E_th.subs(A_y, 0), A_th)[0]
-    Y_of = sp.solve(E_y, Y)[0]
-    Y0 = sp.factor(sp.cancel(Y_of.subs({A_y: 0, A_th: th_dd0, V: 0}) / K))
-    D2Y0 = _lie(_lie(Y0, th_dd0), th_dd0)
-    th_dd1 = sp.solve(E_th.subs(A_y, K * D2Y0), A_th)[0]
-    Yk = Y_of.subs({A_y: K * D2Y0, A_th: th_dd1, V: 0})
+    th_dd0 = sp.solve(E_th.subs(y1_acc, 0), theta_acc)[0]
+    Y_of = sp.solve(E_y, y1_s)[0]
+    Y0 = sp.factor(sp.cancel(Y_of.subs({y1_acc: 0, theta_acc: th_dd0, y1dot_s: 0}) / K))
+    D2Y0 = lie_derivative(lie_derivative(Y0, th_dd0), th_dd0)
+    th_dd1 = sp.solve(E_th.subs(y1_acc, K * D2Y0), theta_acc)[0]
+    Yk = Y_of.subs({y1_acc: K * D2Y0, theta_acc: th_dd1, y1dot_s: 0})
     Y1 = sp.diff(Yk, K, 2).subs(K, 0) / 2
     # structure: Yk = K Y0 + K² Y1 exactly (checked at a rational point with S² + C² = 1)
-    pt = {S: sp.Rational(3, 5), Cc: sp.Rational(4, 5), W: sp.Rational(2, 7), m: sp.Rational(3, 2),
-          h: sp.Rational(1, 3), C: sp.Rational(5, 7), g: sp.Rational(9, 8), M: sp.Rational(1, 4)}
+    point = {sin_th: sp.Rational(3, 5), cos_th: sp.Rational(4, 5), w_th: sp.Rational(2, 7), m: sp.Rational(3, 2),
+             h: sp.Rational(1, 3), C: sp.Rational(5, 7), g: sp.Rational(9, 8), M: sp.Rational(1, 4)}
     kk = sp.Rational(1, 11)
-    if sp.nsimplify(Yk.subs(pt).subs(K, kk) - (kk * Y0 + kk**2 * Y1).subs(pt)) != 0:
+    if sp.nsimplify(Yk.subs(point).subs(K, kk) - (kk * Y0 + kk**2 * Y1).subs(point)) != 0:
         raise ValueError("slow manifold: unexpected structure")
     return Y0, Y1
 
@@ -104,10 +106,10 @@ def slow_manifold() -> tuple[sp.Expr, sp.Expr]:
 @lru_cache(maxsize=None)
 def _numeric():
     ath, ay = accelerations()
-    args = (S, Cc, W, Y, V, m, h, C, g, K, M)
+    args = (sin_th, cos_th, w_th, y1_s, y1dot_s, m, h, C, g, K, M)
     acc = sp.lambdify(args, (ath, ay), "mpmath")
     Y0, Y1 = slow_manifold()
-    ic = sp.lambdify((S, Cc, m, h, C, g, K, M), (K * Y0 + K**2 * Y1).subs(W, 0), "mpmath")
+    ic = sp.lambdify((sin_th, cos_th, m, h, C, g, K, M), (K * Y0 + K**2 * Y1).subs(w_th, 0), "mpmath")
     return acc, ic
 
 
@@ -190,6 +192,23 @@ def amplitude_change(alpha_val: str, K_val: str, M_val: str = "0", dps: int = 30
     """|θ(T)| − α: change of the amplitude over one swing."""
     T, th_end, _, _, _ = swing(alpha_val, K_val, M_val, dps, **kw)
     return -th_end - mp.mpf(alpha_val)
+
+
+# ---------------------------------------------------------------- the free pendulum and Newton's pressures
+@lru_cache(maxsize=None)
+def free_swing_trajectory(alpha_val: str, dps: int):
+    """θ'' = −sin θ (g = l = 1) from rest at θ = α: trajectory with state [θ, θ']."""
+    with mp.workdps(dps):
+        return truth.integrate(lambda tt, y: [y[1], -mp.sin(y[0])], [mp.mpf(alpha_val), 0], dps)
+
+
+def newton_pressures(traj, s, hh=1, mm=1):
+    """P, Q = −m d²(h cos θ)/dt², −m d²(h sin θ)/dt² by numerical differentiation of the solution at s."""
+    # fixed step: the trajectory is evaluated at its own precision (an automatic step would round away)
+    step = mp.mpf("1e-7")
+    P = -mm * mp.diff(lambda x: hh * mp.cos(traj(x)[0]), s, 2, h=step)
+    Q = -mm * mp.diff(lambda x: hh * mp.sin(traj(x)[0]), s, 2, h=step)
+    return P, Q
 
 
 # ---------------------------------------------------------------- the forced pendulum (machinery)

@@ -1,24 +1,27 @@
 """Charbonnier 1908, Sur la théorie des perturbations du pendule (suite et fin), §IV–VI, n°18–35.
 
-Sections: general formulas and monomials (n°8–9 rebuilt, n°18–20), the
-examples on the angle (n°21–23), the elastic thread (n°24–26), the length
-growing with time (n°27–35).
+Sections: the general formulas (n°8–9, rebuilt), the perturbing function of the angle and its
+monomials (n°18–20), the examples on the angle (n°21–23), the elastic thread (n°24–26), the
+length growing with time (n°27–35).  Shared helpers: common.py (ids, sources, readings,
+precision, kernel arguments) and symbols.py; the models of the truth: truth.py; the chain every
+worked example follows: chain.py.
 """
 import re
 
 from pendsym.memoir import Memoir, Section, headings_by
 
-from . import angle_examples, elastic, general, variable_length
+from . import angle, angle_examples, common, elastic, general, variable_length
 
 SECTIONS = (
-    Section.of(general, "General formulas (n°8–9, rebuilt) and the angle monomials (n°18–20)"),
+    Section.of(general, "General formulas (n°8–9, rebuilt)"),
+    Section.of(angle, "The perturbing function depends on the angle: general formulas, monomials, J_m (n°18–20)"),
     Section.of(angle_examples, "The worked examples on the angle (n°21–23)"),
     Section.of(elastic, "Pendulum with an elastic thread (n°24–26)"),
     Section.of(variable_length, "Pendulum of variable length (n°27–35)"),
 )
 
 
-def _paragraphs(lo: int, hi: int):
+def paragraphs(lo: int, hi: int):
     """Takes a Spec whose paragraph n° lies in [lo, hi]."""
     def takes(spec) -> bool:
         m = re.search(r"(\d+)", spec.source.para)
@@ -27,19 +30,19 @@ def _paragraphs(lo: int, hi: int):
 
 
 MEMOIR = Memoir(
-    key="charbonnier1908",
+    key=common.MEMOIR,
     title=("P. Charbonnier, Sur la théorie des perturbations du pendule (suite et fin), "
            "Nouvelles annales de mathématiques, 4e série, t. 8 (1908), p. 220–238, n°18–35"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), (
-        ("General formulas (n°8–9, not in the file, rebuilt)", _paragraphs(8, 9)),
-        ("§IV. The perturbing function depends on the angle: general formulas, monomials, J_m (n°18–20)",
-         _paragraphs(18, 20)),
-        ("n°21. Second term of the period", _paragraphs(21, 21)),
-        ("n°22. Thread winding on a curve", _paragraphs(22, 22)),
-        ("n°23. The cycloidal pendulum", _paragraphs(23, 23)),
-        ("§V. Pendulum with an elastic thread (n°24–26)", _paragraphs(24, 26)),
-        ("§VI. Pendulum of variable length (n°27–35)", _paragraphs(27, 35)),
+        ("General formulas (n°8–9, not in the file, rebuilt)", paragraphs(8, 9)),
+        ("IV. The perturbing function depends on the angle: general formulas, monomials, J_m (n°18–20)",
+         paragraphs(18, 20)),
+        ("n°21. Second term of the period", paragraphs(21, 21)),
+        ("n°22. Thread winding on a curve", paragraphs(22, 22)),
+        ("n°23. The cycloidal pendulum", paragraphs(23, 23)),
+        ("V. Pendulum with an elastic thread (n°24–26)", paragraphs(24, 26)),
+        ("VI. Pendulum of variable length (n°27–35)", paragraphs(27, 35)),
     )),
     cost=1.0,
 )

@@ -9,31 +9,29 @@ import mpmath as mp
 import sympy as sp
 
 from pendsym import verify, wallis
-from pendsym.result import KernelArg, KernelSpec, Reading, Source, Spec
-from . import chain, truth as tr
+from pendsym.result import KernelArg, KernelSpec, Reading, Spec
+from . import chain, truth
 from .chain import DELTA, Example
-from .general import MEMOIR
-from .symbols import DEFS, T, alpha, beta, dtheta, eps, k, l0, m, omega, q, t, theta, theta_m, y
+from .common import BETA, K_CHECK, L0, THETA, Geometric, printed, rid, src
+from .symbols import DEF_ITEMS, T, alpha, beta, cos_kt, dtheta, eps, k, kt, l0, m, omega, q, sin_kt, theta, theta_m, y
 
-c, s = sp.cos(k * t), sp.sin(k * t)
-x = k * t
 R = sp.Rational
 
-# ----------------------------------------------------------------- n°21
+# ----------------------------------------------------------------- n°21: the second term of the sine
 N21 = Example(
     key="n21", name="Second term of the period", law="sine", small=DELTA, order=3,
     pages={"default": 224, "eom": 223, "Es": 224, "dT": 225, "dThalf": 225, "dthetam": 225},
-    eps=lambda: -k**2 / 6, phi=lambda: theta**3, phi_of_theta=True,
+    eps=-k**2 / 6, phi=theta**3, phi_of_theta=True,
     printed={
-        "eom": lambda: -R(1, 6) * k**2 * theta**3,
-        "Es": lambda: -alpha**3 / (4 * k) * (1 - c**4),
-        "Ec": lambda: -alpha**3 / (4 * k) * (c * s * (c**2 + R(3, 2)) + R(3, 2) * x),
-        "theta": lambda: -alpha * c - R(1, 24) * alpha**3 / 2 * s * (3 * x + s * c),
-        "dtheta": lambda: k * alpha * s - R(1, 24) * k * alpha**3 * (R(3, 2) * x * c + s * (2 + 3 * c**2)),
-        "dT": lambda: alpha**2 * T / 16,
-        "dalpha": lambda: sp.S.Zero,
-        "dThalf": lambda: alpha**2 * T / 32,
-        "dthetam": lambda: -alpha**2 * theta_m / 24,
+        "eom": -R(1, 6) * k**2 * theta**3,
+        "Es": -alpha**3 / (4 * k) * (1 - cos_kt**4),
+        "Ec": -alpha**3 / (4 * k) * (cos_kt * sin_kt * (cos_kt**2 + R(3, 2)) + R(3, 2) * kt),
+        "theta": -alpha * cos_kt - R(1, 24) * alpha**3 / 2 * sin_kt * (3 * kt + sin_kt * cos_kt),
+        "dtheta": k * alpha * sin_kt - R(1, 24) * k * alpha**3 * (R(3, 2) * kt * cos_kt + sin_kt * (2 + 3 * cos_kt**2)),
+        "dT": alpha**2 * T / 16,
+        "dalpha": sp.S.Zero,
+        "dThalf": alpha**2 * T / 32,
+        "dthetam": -alpha**2 * theta_m / 24,
     },
     readings={
         "eom": (Reading("−(1/1.2.3) k²θ³", "P = −k²θ³/6"),),
@@ -52,6 +50,10 @@ def J3_derived(_deps) -> sp.Expr:
     return wallis.J(3, y)
 
 
+def J3_printed() -> sp.Expr:
+    return sp.cos(y) * sp.sin(y) * (sp.cos(y) ** 2 + R(3, 2)) / 4 + R(3, 8) * y
+
+
 def J3_check(result, level):
     f = verify.lambdify_mp(result.derived, (y,))
     pairs = [(f"y={v}", f(mp.mpf(v)), mp.quad(lambda u: mp.cos(u) ** 4, [0, mp.mpf(v)])) for v in ("0.5", "2", "5.5")]
@@ -60,10 +62,10 @@ def J3_check(result, level):
 
 def dT_from_monomial(deps) -> sp.Expr:
     """n°21 6°: the monomial formula of n°20 with m = 3, ε = −k²/6."""
-    return sp.simplify(deps[f"{MEMOIR}.n20.dT"].derived.subs({m: 3, eps: -k**2 / 6}))
+    return sp.simplify(deps[rid(20, "dT")].derived.subs({m: 3, eps: -k**2 / 6}))
 
 
-# ----------------------------------------------------------------- n°22
+# ----------------------------------------------------------------- n°22: the thread winding on a curve
 A1 = sp.Symbol("A_1", real=True)
 
 
@@ -75,12 +77,12 @@ def winding_length(_deps) -> sp.Expr:
     """
     rho = beta * l0 * omega**2 * (1 + A1 * omega)
     I = sp.atan(rho / sp.diff(rho, omega))
-    th_of_w = sp.series(I + omega, omega, 0, 3).removeO()          # θ(ω) to second order
-    w_of_th = sp.Symbol("w")
-    inv = sp.solve(sp.Eq(theta, th_of_w.subs(omega, w_of_th)), w_of_th)
-    w_small = [r for r in inv if sp.limit(r, theta, 0) == 0][0]
-    l_expr = (l0 - rho).subs(omega, w_small)
-    return sp.expand(sp.series(l_expr, theta, 0, 3).removeO())
+    theta_of_omega = sp.series(I + omega, omega, 0, 3).removeO()     # θ(ω) to second order
+    w = sp.Symbol("w")
+    inverse = sp.solve(sp.Eq(theta, theta_of_omega.subs(omega, w)), w)
+    omega_small = [r for r in inverse if sp.limit(r, theta, 0) == 0][0]
+    length = (l0 - rho).subs(omega, omega_small)
+    return sp.expand(sp.series(length, theta, 0, 3).removeO())
 
 
 def winding_length_check(result, level):
@@ -94,9 +96,9 @@ def winding_length_check(result, level):
             drho = lambda w: bv * (2 * w + 3 * a1v * w**2)
             w = mp.findroot(lambda w: w + mp.atan(rho(w) / drho(w)) - th, 2 * th / 3)
             return 1 - mp.quad(lambda u: mp.sqrt(rho(u) ** 2 + drho(u) ** 2), [0, w])
-    vals = verify.geometric("0.005", "0.1", verify.LEVELS[level])
-    return verify.order_check(param="theta", values=vals, truth=l_exact, derived=lambda th: f(th, bv, 1, a1v),
-                              expected=3, band=0.3, params=(("beta", "0.7"), ("A_1", "0.3"), ("l_0", "1")),
+    return verify.order_check(param="theta", values=Geometric("0.005", "0.1")(level), truth=l_exact,
+                              derived=lambda th: f(th, bv, 1, a1v), expected=3, band=0.3,
+                              params=(("beta", "0.7"), ("A_1", "0.3"), ("l_0", "1")),
                               truth_desc="exact wound arc length on ρ = βl0ω²(1 + A1ω), contact from "
                                          "θ = ω + atan(ρ/ρ') (mpmath findroot, quad)")
 
@@ -104,13 +106,13 @@ def winding_length_check(result, level):
 N22 = Example(
     key="n22", name="Thread winding on a curve", law="winding", small=DELTA, order=3,
     pages={"default": 227, "eom": 226, "dT": 228},
-    eps=lambda: R(4, 9) * beta * k**2 * alpha**3, phi=lambda: c * (4 * s**2 - c**2),
+    eps=R(4, 9) * beta * k**2 * alpha**3, phi=cos_kt * (4 * sin_kt**2 - cos_kt**2),
     printed={
-        "eom": lambda: R(4, 9) * beta * theta * (k**2 * theta**2 - 4 * dtheta**2),
-        "Es": lambda: 1 / k * (2 - R(5, 4) * s**2) * s**2,
-        "Ec": lambda: 1 / k * (R(1, 8) * x + c * s * (R(1, 8) - R(5, 4) * c**2)),
-        "dT": lambda: beta * alpha**2 * T / 18,
-        "dalpha": lambda: sp.S.Zero,
+        "eom": R(4, 9) * beta * theta * (k**2 * theta**2 - 4 * dtheta**2),
+        "Es": 1 / k * (2 - R(5, 4) * sin_kt**2) * sin_kt**2,
+        "Ec": 1 / k * (R(1, 8) * kt + cos_kt * sin_kt * (R(1, 8) - R(5, 4) * cos_kt**2)),
+        "dT": beta * alpha**2 * T / 18,
+        "dalpha": sp.S.Zero,
     },
     readings={
         "Es": (Reading("E_s = (1/k)(2 − (5/4) sin² kt) sin² kt",
@@ -120,15 +122,15 @@ N22 = Example(
                        certain=False),),
         "dT": (Reading("ΔT = (1/2.3.3) βα²T", "βα²T/18"),),
     },
-    params=((beta, "0.7"),), extra_args=(KernelArg("beta", 1e-3, 10.0),), law_from=f"{MEMOIR}.n22.l",
+    params=((beta, "0.7"),), extra_args=(BETA,), law_from=rid(22, "l"),
 )
 
-# ----------------------------------------------------------------- n°23
+# ----------------------------------------------------------------- n°23: the "cycloidal" pendulum
 N23 = Example(
     key="n23", name="Pendulum on a curve l = l0(1 + qθ²)", law="curve_q", small=DELTA, order=3,
     pages={"default": 228},
-    eps=lambda: -q * k**2 * alpha**3, phi=lambda: c * (4 * s**2 - c**2),
-    printed={"dT": lambda: -q / 8 * alpha**2 * T},
+    eps=-q * k**2 * alpha**3, phi=cos_kt * (4 * sin_kt**2 - cos_kt**2),
+    printed={"dT": -q / 8 * alpha**2 * T},
     readings={"dT": (Reading("ΔT = −(g/8)α²T", "−(q/8)α²T: the OCR reads q as g"),)},
     params=((q, "0.4"),), extra_args=(KernelArg("q", -10.0, 10.0, log=False),),
     notes={"eps": "n°23 gives no ε; ε = −qk²α³ is n°22's with −4β/9 replaced by q, as the memoir says."},
@@ -137,42 +139,42 @@ N23 = Example(
 
 def isochronous_q(deps) -> sp.Expr:
     """q that cancels the α² term: ΔT(n°21) + ΔT(n°23, linear model) = 0 (n°23)."""
-    total = deps[f"{MEMOIR}.n21.dT"].derived + deps[f"{MEMOIR}.n23.dT"].derived
-    (sol,) = sp.solve(sp.Eq(total, 0), q)
-    return sol
+    total = deps[rid(21, "dT")].derived + deps[rid(23, "dT")].derived
+    (solution,) = sp.solve(sp.Eq(total, 0), q)
+    return solution
 
 
 def isochronous_check(result, level):
     """With q = 1/2 and the full sin θ, the swing time differs from π/k by O(α⁴) only."""
-    kv = mp.mpf(chain.K_CHECK)
+    kv = mp.mpf(K_CHECK)
     qv = mp.nstr(mp.mpf(sp.N(result.derived, 40)), 40)
-    vals = verify.geometric("0.02", "0.3", verify.LEVELS[level])
+
+    def relative_change(p, dps):
+        return (truth.swing("cycloidal_sine", mp.nstr(p, 40), K_CHECK, dps, q=qv).T - mp.pi / kv) / (mp.pi / kv)
     return verify.order_check(
-        param="alpha", values=vals, derived=lambda p: 0, expected=4, band=0.3,
-        truth=lambda p, dps: (tr.swing("cycloidal_sine", mp.nstr(p, 40), chain.K_CHECK, dps, q=qv).T - mp.pi / kv) / (mp.pi / kv),
-        truth_desc=tr.MODEL_TEXT["cycloidal_sine"] + "; (T − π/k)/(π/k)",
-        params=(("k", chain.K_CHECK), ("q", qv)), note="order 4, not 2: the α² term is cancelled")
+        param="alpha", values=Geometric("0.02", "0.3")(level), derived=lambda p: 0, expected=4, band=0.3,
+        truth=relative_change, truth_desc=truth.MODEL_TEXT["cycloidal_sine"] + "; (T − π/k)/(π/k)",
+        params=(("k", K_CHECK), ("q", qv)), note="order 4, not 2: the α² term is cancelled")
 
 
+# ----------------------------------------------------------------- the Result table
 def specs() -> tuple[Spec, ...]:
-    P = MEMOIR
-    defs = tuple(DEFS.items())
     return (
         chain.specs(N21)
-        + (Spec(f"{P}.n21.J3", "J_3 = ∫_0^y cos⁴ y dy by the recurrence", Source(P, "n°21 3°", 224), "J_3(y)",
-                J3_derived, printed=lambda: sp.cos(y) * sp.sin(y) * (sp.cos(y) ** 2 + R(3, 2)) / 4 + R(3, 8) * y,
-                check=J3_check, kernel=KernelSpec((KernelArg("y", 0.0, 20.0, log=False),), "J_3(y)")),
-           Spec(f"{P}.n21.dT_from_monomial", "n°20's monomial ΔT with m = 3, ε = −k²/6", Source(P, "n°21 6°", 225),
-                r"\Delta T", dT_from_monomial, deps=(f"{P}.n20.dT",), printed=lambda: alpha**2 * T / 16,
-                check=chain.order_check_of(N21, "dT"), defs=defs))
-        + (Spec(f"{P}.n22.l", "Length of the free thread, l(θ)", Source(P, "n°22 1°", 226), "l",
-                winding_length, printed=lambda: l0 * (1 - R(4, 9) * beta * theta**2),
+        + (Spec(rid(21, "J3"), "J_3 = ∫_0^y cos⁴ y dy by the recurrence", src("n°21 3°", 224), "J_3(y)",
+                J3_derived, printed=J3_printed, check=J3_check,
+                kernel=KernelSpec((KernelArg("y", 0.0, 20.0, log=False),), "J_3(y)")),
+           Spec(rid(21, "dT_from_monomial"), "n°20's monomial ΔT with m = 3, ε = −k²/6", src("n°21 6°", 225),
+                r"\Delta T", dT_from_monomial, deps=(rid(20, "dT"),), printed=printed(alpha**2 * T / 16),
+                check=chain.order_check_of(N21, "dT"), defs=DEF_ITEMS))
+        + (Spec(rid(22, "l"), "Length of the free thread, l(θ)", src("n°22 1°", 226), "l",
+                winding_length, printed=printed(l0 * (1 - R(4, 9) * beta * theta**2)),
                 check=winding_length_check,
-                kernel=KernelSpec((chain.THETA, KernelArg("beta", 1e-3, 10.0), chain.L0), "l(θ) of the winding thread"),
+                kernel=KernelSpec((THETA, BETA, L0), "l(θ) of the winding thread"),
                 note="Independent of A1 to this order, as the memoir's formula implies."),)
         + chain.specs(N22)
         + chain.specs(N23)
-        + (Spec(f"{P}.n23.q", "q making the swings isochronous to O(α⁴)", Source(P, "n°23", 229), "q",
-                isochronous_q, deps=(f"{P}.n21.dT", f"{P}.n23.dT"), printed=lambda: R(1, 2),
+        + (Spec(rid(23, "q"), "q making the swings isochronous to O(α⁴)", src("n°23", 229), "q",
+                isochronous_q, deps=(rid(21, "dT"), rid(23, "dT")), printed=printed(R(1, 2)),
                 readings=(Reading("g = 1/2", "q = 1/2"),), check=isochronous_check),)
     )

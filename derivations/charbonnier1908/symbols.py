@@ -1,4 +1,4 @@
-"""Charbonnier's symbols, with their assumptions (memoir, n°18–35)."""
+"""Charbonnier's symbols, with their assumptions (memoir, n°18–35), and his own definitions."""
 import sympy as sp
 
 t = sp.Symbol("t", nonnegative=True)            # time
@@ -26,6 +26,15 @@ v = sp.Symbol("v", real=True)                   # speed of the bob (n°24)
 theta_i = sp.Symbol("theta_i", real=True)       # general initial angle (machinery tests)
 omega_i = sp.Symbol("omega_i", real=True)       # general initial speed
 
+# The phase kt and its sine and cosine, as the memoir writes them (∫ … d(kt)).
+kt = k * t
+cos_kt, sin_kt = sp.cos(kt), sp.sin(kt)
+
+# E_s, E_c of the phase, as the memoir writes them: E_s(π) is the value at kt = π (n°9, n°18).
+E_s, E_c = sp.Function("E_s"), sp.Function("E_c")
+varphi = sp.Function("varphi")                  # the perturbing function φ (n°8, n°18)
+
 # Charbonnier's own definitions, applied to a printed formula before it is
 # compared or evaluated: T = π/k, θ'_m = kα, g = k² l0, e = m g/μ.
 DEFS = {T: sp.pi / k, theta_m: k * alpha, g: k**2 * l0, e: mass * k**2 * l0 / mu}
+DEF_ITEMS = tuple(DEFS.items())

@@ -16,7 +16,7 @@ import mpmath as mp
 import sympy as sp
 
 from pendsym import pendulum, truth
-from .symbols import a, alpha, beta, dtheta, eps, g, k, l0, mu, q, t, theta
+from .symbols import a, beta, dtheta, eps, g, k, l0, mu, q, t, theta
 
 # Exact length laws l(θ, θ', t) of the examples (n°22, n°23, n°24, n°27).
 _lam = sp.Symbol("lambda", positive=True)
