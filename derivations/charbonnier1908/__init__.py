@@ -45,4 +45,5 @@ MEMOIR = Memoir(
         ("VI. Pendulum of variable length (n°27–35)", paragraphs(27, 35)),
     )),
     cost=1.0,
+    swing_correction="n21_dT",   # ΔT of n°21 (T α²/16): make bench sets T + ΔT beside the exact swing time
 )
