@@ -171,7 +171,7 @@ def unit_integral() -> sp.Expr:
     return (w(s).diff(s).subs(s, lam) - w(s).diff(s).subs(s, 0)).subs(BC10)
 
 
-# the quantities (17)–(19) claim positive, in terms of the end values
+# (17): v0 > 0, w0 > 0, wλ > w0, β1 > 0, vλ < 0, β1 < λ, v0 < λ, −vλ < λ — the quantities claimed positive
 def v0_positive() -> sp.Expr:
     return ends(v(0))
 
@@ -189,6 +189,7 @@ def minus_vl() -> sp.Expr:
 
 
 def lam_minus_beta1() -> sp.Expr:
+    """λ − β1 with β1 = λ + vλ − v0 (17)."""
     return sp.expand(lam - ch1_model.beta1_def())
 
 
@@ -200,8 +201,9 @@ def lam_plus_vl() -> sp.Expr:
     return lam + ends(v(lam))
 
 
+# (18): from the integral before (18), w² ≤ wλ² on [0, λ] (w increases)
 def step0_of_18() -> sp.Expr:
-    """v0/w0 − vλ/wλ > λw0/wλ² (w² ≤ wλ² on [0, λ])."""
+    """v0/w0 − vλ/wλ − λw0/wλ² > 0."""
     return ratio_integral() - lam * w0 / wl**2
 
 
@@ -211,26 +213,33 @@ def first_of_18() -> sp.Expr:
 
 
 def second_of_18() -> sp.Expr:
+    """−λvλ(1 + w0/wλ) < −2λvλ."""
     return sp.factor(-2 * lam * vl + lam * vl * (1 + w0 / wl))
 
 
 def third_of_18() -> sp.Expr:
+    """−2λvλ < 2λ²."""
     return sp.factor(2 * lam**2 + 2 * lam * vl)
 
 
+# (19): from ∫ w/M ds = 1 with M1 ≤ M ≤ M2 and w0 ≤ w ≤ wλ
 def M1_below() -> sp.Expr:
+    """M1 < λwλ."""
     return lam * wl - M1
 
 
 def M2_above() -> sp.Expr:
+    """M2 > λw0."""
     return M2 - lam * w0
 
 
 def lower_of_19() -> sp.Expr:
+    """λw0/μ < M1 (μ = M2/M1): (M2 − λw0)/μ."""
     return sp.expand((M2 - lam * w0) / mu)
 
 
 def upper_of_19() -> sp.Expr:
+    """M2 < λμwλ: μ(λwλ − M1)."""
     return sp.expand(mu * (lam * wl - M1))
 
 

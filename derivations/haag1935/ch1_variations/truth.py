@@ -24,7 +24,7 @@ from ..check_kinds import OnShotBlade
 from ..common import CONFIRM_DPS, DPS
 from ..symbols import s, v, w
 
-LEVEL_PROFILES = {"quick": ("uniform", "hole"), "full": ("uniform", "hole", "tapered")}
+STENCIL_PROFILES = {"quick": ("uniform", "hole"), "full": ("uniform", "hole", "tapered")}   # blades per level
 # step H (relative for λ); the 45-digit confirmation takes 2H, so that agreement bounds both the rounding
 # and the O(H⁴) truncation of the 30-digit value (pendsym.blade.Blade rounds a length through a float by
 # nsimplify, which loses or garbles most other steps: the λ family keeps H at 45 digits, which
@@ -32,7 +32,7 @@ LEVEL_PROFILES = {"quick": ("uniform", "hole"), "full": ("uniform", "hole", "tap
 STEP = {DPS: sp.Rational(1, 10**8), CONFIRM_DPS: sp.Rational(2, 10**8)}
 LAMBDA_STEP = sp.Rational(1, 10**7)
 TEMPERATURE = {"alpha": "1.1e-5", "alpha'": "0.9e-5", "beta_t": "-2.4e-4"}   # steel blade, brass-like rod, per degree
-EPSILON_KINDS = {"lin": lambda length: 1 + profiles.s / length, "one": lambda length: sp.Integer(1)}
+EPSILON_KINDS = {"lin": lambda length: 1 + s / length, "one": lambda length: sp.Integer(1)}
 KIND = "quadrature"                               # the kind of evidence these checks report
 FRACTIONS = ("0.3", "0.8")                       # s/λ where v(s), w(s), v'(s) are differentiated
 COMBINATIONS = ({"a": 1, "R": mp.mpf("0.5"), "lam": mp.mpf("0.3"), "lin": 1},
@@ -210,7 +210,7 @@ def relative(truth) -> mp.mpf:
 
 
 def level_params(level: str) -> tuple:
-    return (("profiles", ",".join(LEVEL_PROFILES[level])),)
+    return (("profiles", ",".join(STENCIL_PROFILES[level])),)
 
 
 def confirming(truth_at):
@@ -221,7 +221,7 @@ def confirming(truth_at):
 def period(kinds=("a", "R", "lam")) -> checks.Values:
     """(42)–(44): dT/T of the formula against the truth's d log T along each direction."""
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             for pendulum_name in profiles.PENDULUMS:
                 for kind in kinds:
                     values = direction_values(name, pendulum_name, kind)
@@ -237,7 +237,7 @@ def Q_of_truth() -> checks.Values:
         return base, base["a"] + base["w_lambda"] + base["K"] ** 2 * base["beta_1"]
 
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             for pendulum_name in profiles.PENDULUMS:
                 base, truth = value(name, pendulum_name)
                 yield Point(f"{name}/{pendulum_name}", base, truth, relative(truth))
@@ -252,7 +252,7 @@ def lambda_derivative(key: str | None = None, function: str | None = None) -> ch
     fractions = FRACTIONS if function else ()
 
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             sol = shot(name)
             derivatives = blade_partials(name, "lam", DPS, fractions)
             base = base_values(name, "clock")
@@ -275,7 +275,7 @@ def slope_lambda_derivative() -> OnShotBlade:
     """(46): ∂v'/∂λ at s = 0.3λ, 0.8λ (the λ-stencil of the shot v'(s), s fixed) against the derived
     ∂u/∂s with the shot w'(s) and the base end values."""
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             derivatives = blade_partials(name, "lam", DPS, FRACTIONS)
             base = base_values(name, "clock")
             for fr in FRACTIONS:
@@ -289,7 +289,7 @@ def slope_lambda_derivative() -> OnShotBlade:
 def end_slope_lambda_derivative() -> checks.Values:
     """(48): the one-sided λ-stencil of the shot v'(λ0) (s = λ0 fixed) on blades λ0(1 + kH), k = 0 … 4."""
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             truth = end_partial(name)
             yield Point(name, base_values(name, "clock"), truth, relative(truth))
     return checks.Values(kind=KIND, truth="one-sided 5-point stencil in λ of the shot v'(λ0) (s = λ0 fixed) on blades "
@@ -305,7 +305,7 @@ def increment() -> OnShotBlade:
     """(54): x(s) = ∂v/∂h at s = 0.3λ, 0.8λ, the h-stencil of the shot v(s) on blades M(1 + hε), against
     (54) with A, B of (55) by quadrature on the unperturbed shot."""
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             base = base_values(name, "clock")
             for kind in _epsilon_kinds(name):
                 derivatives = blade_partials(name, kind, DPS, FRACTIONS)
@@ -322,7 +322,7 @@ def increment() -> OnShotBlade:
 def stiffness_derivative(key: str) -> OnShotBlade:
     """(56), (57): d(key) for M → M(1 + hε), ε = 1 + s/λ and ε = 1, against the integral by quadrature."""
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             for kind in _epsilon_kinds(name):
                 truth = blade_partials(name, kind)[key]
                 yield (Point(f"{name}/ε={kind}", base_values(name, "clock"), truth, relative(truth)), shot(name),
@@ -336,7 +336,7 @@ def stiffness_derivative(key: str) -> OnShotBlade:
 def combined_period() -> OnShotBlade:
     """(58): d log T along da, dR, dλ and εM combined (COMBINATIONS), the integral by quadrature."""
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             for pendulum_name in profiles.PENDULUMS:
                 for i, combination in enumerate(COMBINATIONS):
                     values = combination_values(name, pendulum_name, combination)
@@ -351,7 +351,7 @@ def temperature() -> checks.Values:
     """(60): d log T per degree: α'(a∂_a + R∂_R) + αλ∂_λ + (β + 4α)∂_ε, G2 by quadrature (79)."""
     def points(level, dps):
         coefficients = {k: mp.mpf(x) for k, x in TEMPERATURE.items()}
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             sol = shot(name)
             for pendulum_name in profiles.PENDULUMS:
                 a, R, _ = pendulum(pendulum_name)
@@ -373,7 +373,7 @@ def gravity(which: str) -> checks.Values:
     """(61) (which = "T"): d log T/d log g; (62), (63) (which = "G"): G = 2 d log T/d log g, with
     W = suspension.energy of the principal mode (θ = 1) and Q = K(z − z') of the truth."""
     def points(level, dps):
-        for name in LEVEL_PROFILES[level]:
+        for name in STENCIL_PROFILES[level]:
             sol = shot(name)
             for pendulum_name in profiles.PENDULUMS:
                 values = base_values(name, pendulum_name)
