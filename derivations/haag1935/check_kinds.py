@@ -133,16 +133,17 @@ class Fails:
             for pt in self.points(level, checks.DPS):
                 residuals.append((pt.label, pt.residual(verify.value_at(result.derived_value, pt.env))))
         least = min(res for _, res in residuals)
+        note = "must fail; relative residual " + "; ".join(f"{label}: {mp.nstr(res, 3)}" for label, res in residuals)
         return Evidence(kind="value", passed=bool(least > mp.mpf(self.margin)), truth=self.truth,
-                        max_residual=verify.rounded(least),
-                        note="must fail; relative residual " + "; ".join(f"{lb}: {mp.nstr(res, 3)}" for lb, res in residuals))
+                        max_residual=verify.rounded(least), note=note)
 
 
 def blade_integral(integral: sp.Integral, env: Mapping, shot: blade.BladeSolution, eps=None, at=None) -> mp.mpf:
     """∫_0^λ f(v, w, M, ε, s) ds, or ∫_0^s with s = ``at``, by Gauss–Legendre quadrature on the shot blade
     (v'' = v/M (9)); the other symbols of f are read in env, ε(s) is ``eps`` (0 when None)."""
     (var, lo, hi), = integral.limits
-    body = integral.function.subs({v(var).diff(var, 2): v(var) / M_of_s(var), w(var).diff(var, 2): w(var) / M_of_s(var)})
+    body = integral.function.subs({v(var).diff(var, 2): v(var) / M_of_s(var),
+                                   w(var).diff(var, 2): w(var) / M_of_s(var)})
     v_, w_, M_, eps_ = sp.symbols("V_ W_ M_ E_")
     body = body.subs({v(var): v_, w(var): w_, M_of_s(var): M_, epsilon_of_s(var): eps_})
     others = sorted(body.free_symbols - {v_, w_, M_, eps_, var}, key=lambda x: x.name)
@@ -192,17 +193,20 @@ class OnShotBlade:
                     raise ValueError(f"no value for {slope} at a point")
                 slopes.setdefault(slope, sp.Symbol(f"_D{len(slopes)}"))
             return form.xreplace(slopes)
-        proxy = dataclasses.replace(result, derived=rewrite(result.derived_value), printed=rewrite(result.printed_value),
+        derived, printed = rewrite(result.derived_value), rewrite(result.printed_value)
+        proxy = dataclasses.replace(result, derived=derived, printed=printed,
                                     spec=dataclasses.replace(result.spec, defs=()))
 
         def points(level_: str, dps: int):
             for pt, shot, eps, at in self.points(level_, dps):
                 env = dict(pt.env)
-                env.update({sym.name: blade_integral(integral, env, shot, eps, at) for integral, sym in integrals.items()})
+                env.update({symbol.name: blade_integral(integral, env, shot, eps, at)
+                            for integral, symbol in integrals.items()})
                 if at is not None:
                     state = shot.state(at)
                     env.update({v(s): state[0], w(s): state[2]})
-                    env.update({sym.name: state[1] if slope.args[0] == v(s) else state[3] for slope, sym in slopes.items()})
+                    env.update({symbol.name: state[1] if slope.args[0] == v(s) else state[3]
+                                for slope, symbol in slopes.items()})
                 yield Point(pt.label, env, pt.truth, pt.denom)
         return checks.run(checks.Values(truth=self.truth, points=points, confirm=self.confirm, params=self.params,
                                         kind=self.kind),

@@ -19,14 +19,9 @@ def rid(eq: int, name: str) -> str:
     return f"{MEMOIR}.eq{eq:03d}.{name}"
 
 
-def src(para: str, eq: str | None) -> Source:
-    """The source of a Result: paragraph n° and equation number."""
-    return Source(MEMOIR, para, None, eq)
-
-
-def paragraph(number: int) -> str:
-    """Haag's paragraph n°number, as the sources name it."""
-    return f"n°{number}"
+def src(para: int | str, eq: str | None) -> Source:
+    """The source of a Result: Haag's paragraph (n°para, for a number) and equation number."""
+    return Source(MEMOIR, f"n°{para}" if isinstance(para, int) else para, None, eq)
 
 
 def step(derivation: Callable[[], sp.Basic]) -> Callable[[Mapping[str, Result]], sp.Basic]:

@@ -13,9 +13,9 @@ import sympy as sp
 from .. import ch1_model
 from ..ch1_model import ends
 from ..ch1_model import beta1_def, wronskian_at_lambda  # noqa: F401  (17)/(22), (16): Results of this section
-from ..symbols import (EI, M1, M2, M_of_s, M_s, N, R, X, Y, a, alpha, alpha_ddot, beta, beta1, beta_ddot, epsilon, g, lam,
-                       m, mu, s, t, theta, theta_ddot, theta_dot, v, v0, v_s, vl, varphi, varphi1_s, varphi2_s, w, w0,
-                       w_s, wl, x_of_s, y_of_s)
+from ..symbols import (EI, M1, M2, M_of_s, M_s, N, R, X, Y, a, alpha, alpha_ddot, beta, beta1, beta_ddot,
+                       epsilon, g, lam, m, mu, s, t, theta, theta_ddot, theta_dot, v, v0, v_s, vl, varphi, varphi1_s,
+                       varphi2_s, w, w0, w_s, wl, x_of_s, y_of_s)
 
 
 # ================================================================ n°1: (1)–(6)

@@ -118,7 +118,8 @@ class IntegratedBending:
         derived_ok = sp.simplify(result.derived - right_side) == 0
         printed_ok = result.printed is not None and sp.simplify(result.printed - right_side) == 0
         digits = checks.confirmation_digits(profiles.confirmation_env)
-        return Evidence(kind="quadrature", passed=bool(worst < checks.TOL and derived_ok and digits >= checks.MIN_DIGITS),
+        passed = worst < checks.TOL and derived_ok and digits >= checks.MIN_DIGITS
+        return Evidence(kind="quadrature", passed=bool(passed),
                         truth=DIRECT_TRUTH + "; mpmath quad of φ − Y", max_residual=verify.rounded(worst),
                         printed_agrees=bool(printed_ok), confirm_digits=verify.rounded(digits),
                         note=f"{n} end positions; the right side of (8) is φ − Y: {derived_ok}; "

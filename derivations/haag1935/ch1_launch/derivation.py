@@ -167,7 +167,8 @@ def vF_71(deps):
 def amplitude_of(v_init, freq) -> sp.Expr:
     """Amplitude of y'' = −n²y, y(0) = 0, y'(0) = v_init (dsolve): the coefficient of sin(nt)."""
     yf = sp.Function("y")
-    sol = sp.dsolve(yf(time).diff(time, 2) + freq**2 * yf(time), yf(time), ics={yf(0): 0, yf(time).diff(time).subs(time, 0): v_init})
+    sol = sp.dsolve(yf(time).diff(time, 2) + freq**2 * yf(time), yf(time),
+                    ics={yf(0): 0, yf(time).diff(time).subs(time, 0): v_init})
     return sp.simplify(sol.rhs.coeff(sp.sin(freq * time)))
 
 
@@ -206,7 +207,9 @@ def ratio_blow_73(deps):
 
 def impulse_equations():
     """The restitution law, the momentum of the system pendulum + m' (printed before (74)), and (70)."""
-    return (-V_after + beta_dot0 + b * theta_dot0 - h_restitution * V, m * (beta_dot0 + a * theta_dot0) + m_striking * V_after - m_striking * V)
+    restitution = -V_after + beta_dot0 + b * theta_dot0 - h_restitution * V
+    momentum = m * (beta_dot0 + a * theta_dot0) + m_striking * V_after - m_striking * V
+    return restitution, momentum
 
 
 @functools.lru_cache(maxsize=None)

@@ -86,7 +86,8 @@ def pendulum_energy_80(deps):
 def blade_energy_80(deps):
     """W = (mg/2)∫Mφ'² ds with φ' of (66): (80)."""
     dphi = deps[rid(66, "dphi")].derived
-    return sp.factor(pull_integral(mg / 2 * sp.Integral(sp.factor(M_of_s(s) * dphi**2), (s, 0, lam)), F2_G2_integrands(deps)))
+    energy = mg / 2 * sp.Integral(sp.factor(M_of_s(s) * dphi**2), (s, 0, lam))
+    return sp.factor(pull_integral(energy, F2_G2_integrands(deps)))
 
 
 def suppleness_80(deps):
@@ -145,7 +146,8 @@ def alpha_85(deps):
 
 def fork_series(deps):
     """(84) with (64), (85) to the second order in θ: (c0(r), c2(r))."""
-    ex = deps[rid(84, "geometry")].derived.subs({beta: deps[rid(64, "beta")].derived, alpha: deps[rid(85, "alpha")].derived})
+    ex = deps[rid(84, "geometry")].derived.subs({beta: deps[rid(64, "beta")].derived,
+                                                alpha: deps[rid(85, "alpha")].derived})
     ser = sp.expand(sp.series(ex.subs(theta, epsilon * theta), epsilon, 0, 4).removeO().subs(epsilon, 1))
     return ser.coeff(theta, 0), ser.coeff(theta, 2)
 

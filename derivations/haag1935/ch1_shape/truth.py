@@ -154,7 +154,8 @@ def geometry() -> checks.Values:
     """(84): 0 for M = A + r(cos θ, sin θ), C = (c, 0) and L = |CM|."""
     def env(pt):
         values = {k: mp.mpf(x) for k, x in pt.items()}
-        x_M, y_M = values["alpha"] + values["r"] * mp.cos(values["theta"]), values["beta"] + values["r"] * mp.sin(values["theta"])
+        x_M = values["alpha"] + values["r"] * mp.cos(values["theta"])
+        y_M = values["beta"] + values["r"] * mp.sin(values["theta"])
         values["L"] = mp.hypot(x_M - values["c"], y_M)               # the distance CM
         return values
     return values_at("0 for M = A + r(cos θ, sin θ), C = (c, 0) and L = |CM| computed by mpmath hypot",
@@ -221,7 +222,8 @@ def A_fork() -> checks.All:
             with mp.workdps(40):
                 env = fork_env(name, pend)
                 r_v = env["L"] + env["c"] - env["lambda"]
-                return env, r_v, r_v**2 + 2 * r_v * (env["lambda"] - env["c"]) + (env["lambda"] - env["c"]) ** 2 - env["L"] ** 2
+                x_v = env["lambda"] - env["c"]
+                return env, r_v, r_v**2 + 2 * r_v * x_v + x_v**2 - env["L"] ** 2
 
         def at(expr, theta_v):
             env, r_v, base = geometry_at()
@@ -232,8 +234,8 @@ def A_fork() -> checks.All:
         def truth(theta_v, dps):
             env, r_v, _ = geometry_at()
             return lhs84(r_v, theta_v, env["c"], env["L"], fork_model(name, pend, dps))
-        return checks.Order(param="theta", values=thetas, truth=truth, at=at, expected=4, params=fork_params(name, pend),
-                            dps=DPS, confirm_dps=CONFIRM_DPS,
+        return checks.Order(param="theta", values=thetas, truth=truth, at=at, expected=4,
+                            params=fork_params(name, pend), dps=DPS, confirm_dps=CONFIRM_DPS,
                             truth_desc=f"the left side of (84) evaluated exactly at r = L + c − λ with α = λ − F2θ²/2, "
                                        f"β = −(a + z')θ, F2 = ∫φ²/θ² and z' from the direct blade ({MODES}); residual "
                                        f"of r² + 2r(λ − c) + (λ − c)² − L² − Aθ²")
@@ -252,8 +254,8 @@ def r_fork() -> checks.All:
             with mp.workdps(40):
                 env = fork_env(name, pend)
             return root84(theta_v, env["c"], env["L"], fork_model(name, pend, dps))
-        return checks.Order(param="theta", values=thetas, truth=truth, at=at, expected=4, params=fork_params(name, pend),
-                            dps=DPS, confirm_dps=CONFIRM_DPS,
+        return checks.Order(param="theta", values=thetas, truth=truth, at=at, expected=4,
+                            params=fork_params(name, pend), dps=DPS, confirm_dps=CONFIRM_DPS,
                             truth_desc=f"the root of (84) near L + c − λ, exact in θ, with α = λ − F2θ²/2, "
                                        f"β = −(a + z')θ, F2 and z' from the direct blade ({MODES})")
     return checks.All(tuple(order(name, pend) for name, pend in FORK_PAIRS["full"]))
@@ -286,6 +288,9 @@ class ForkOptimum:
 
     def __call__(self, result: Result, level: str) -> Evidence:
         runs = {"derived": [], "printed": []}
+        description = (f"the glide r(θ) − r(0) of the fork (root of (84) exact in θ, F2, z' from the direct blade, "
+                       f"{MODES}) with λ − c = x the root of (87) of smaller modulus, L = {FORK['L']}: of the fourth "
+                       f"order (second order for any other x)")
         with mp.workdps(40):
             for name, pend in FORK_PAIRS[level]:
                 env = fork_env(name, pend)
@@ -294,14 +299,13 @@ class ForkOptimum:
                         continue
                     c_v = env["lambda"] - optimum_x(form, env)
                     r0 = env["L"] + c_v - env["lambda"]
+
+                    def glide(theta_v, dps, c_v=c_v, name=name, pend=pend, env=env):
+                        return root84(theta_v, c_v, env["L"], fork_model(name, pend, dps))
                     runs[which].append(verify.order_check(
-                        param="theta", values=thetas(level), expected=4, params=fork_params(name, pend),
-                        truth=lambda theta_v, dps, c_v=c_v, name=name, pend=pend, env=env: root84(
-                            theta_v, c_v, env["L"], fork_model(name, pend, dps)),
-                        derived=lambda theta_v, r0=r0: r0, dps=DPS, confirm_dps=CONFIRM_DPS,
-                        truth_desc=f"the glide r(θ) − r(0) of the fork (root of (84) exact in θ, F2, z' from the direct "
-                                   f"blade, {MODES}) with λ − c = x the root of (87) of smaller modulus, L = "
-                                   f"{FORK['L']}: of the fourth order (second order for any other x)"))
+                        param="theta", values=thetas(level), truth=glide, derived=lambda theta_v, r0=r0: r0,
+                        expected=4, truth_desc=description, params=fork_params(name, pend), dps=DPS,
+                        confirm_dps=CONFIRM_DPS))
         first, printed = runs["derived"][0], runs["printed"]
         return Evidence(kind="order", passed=all(run.passed for run in runs["derived"]), truth=first.truth,
                         max_residual=first.max_residual, order=first.order, expected_order=first.expected_order,

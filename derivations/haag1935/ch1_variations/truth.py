@@ -213,9 +213,23 @@ def level_params(level: str) -> tuple:
     return (("profiles", ",".join(STENCIL_PROFILES[level])),)
 
 
+def stencil_values(truth: str, points, confirm, **options) -> checks.Values:
+    """checks.Values of a stencil truth, reported as quadrature evidence, with the level's blades as parameters."""
+    return checks.Values(truth=truth, points=points, confirm=confirm, kind=KIND, params=level_params, **options)
+
+
+def stencil_values_on_blade(truth: str, points, confirm) -> OnShotBlade:
+    """The same for forms holding integrals over the blade (or v', w' at a point): see check_kinds.OnShotBlade."""
+    return OnShotBlade(truth=truth, points=points, confirm=confirm, kind=KIND, params=level_params)
+
+
 def confirming(truth_at):
     """The confirmation of a truth: its value at a precision (with step 2H at 45 digits)."""
     return lambda dps: {"truth": truth_at(dps)}
+
+
+LAMBDA_STENCIL = "on blades λ(1 + kH) with the same M(s) (pendsym.blade, 30 digits)"
+EPSILON_STENCIL = "on blades M(s)(1 + hε(s)) (pendsym.blade)"
 
 
 def period(kinds=("a", "R", "lam")) -> checks.Values:
@@ -226,8 +240,8 @@ def period(kinds=("a", "R", "lam")) -> checks.Values:
                 for kind in kinds:
                     values = direction_values(name, pendulum_name, kind)
                     yield Point(f"{name}/{pendulum_name}/d{kind}", values, values["truth"], relative(values["truth"]))
-    return checks.Values(kind=KIND, truth=f"d log T along {', '.join(kinds)}: " + TRUTH, points=points, params=level_params,
-                         confirm=confirming(lambda dps: partials("uniform", "clock", "lam", dps)["logT"]))
+    return stencil_values(f"d log T along {', '.join(kinds)}: " + TRUTH, points,
+                          confirming(lambda dps: partials("uniform", "clock", "lam", dps)["logT"]))
 
 
 def Q_of_truth() -> checks.Values:
@@ -241,9 +255,9 @@ def Q_of_truth() -> checks.Values:
             for pendulum_name in profiles.PENDULUMS:
                 base, truth = value(name, pendulum_name)
                 yield Point(f"{name}/{pendulum_name}", base, truth, relative(truth))
-    return checks.Values(kind=KIND, truth="a − a1 + K²β1 with the shot wλ, β1 and K = −n²z'/g of the truth; K(z − z') with "
-                               "z, z' the nodes of the two modes of pendsym.suspension", points=points,
-                         confirm=confirming(lambda dps: value("uniform", "clock", dps)[1]))
+    return stencil_values("a − a1 + K²β1 with the shot wλ, β1 and K = −n²z'/g of the truth; K(z − z') with z, z' "
+                          "the nodes of the two modes of pendsym.suspension", points,
+                          confirming(lambda dps: value("uniform", "clock", dps)[1]))
 
 
 def lambda_derivative(key: str | None = None, function: str | None = None) -> checks.Values:
@@ -266,9 +280,8 @@ def lambda_derivative(key: str | None = None, function: str | None = None) -> ch
                 yield Point(f"{name} {fr}", env, truth, relative(truth))
     first = f"{function}@{FRACTIONS[0]}" if function else key
     what = f"{function}(s), s = 0.3λ, 0.8λ fixed" if function else key
-    return checks.Values(kind=KIND, truth=f"5-point stencil in λ of the shot {what} on blades λ(1 + kH) with the same M(s) "
-                               "(pendsym.blade, 30 digits)", points=points, params=level_params,
-                         confirm=confirming(lambda dps: blade_partials("uniform", "lam", dps, fractions)[first]))
+    return stencil_values(f"5-point stencil in λ of the shot {what} {LAMBDA_STENCIL}", points,
+                          confirming(lambda dps: blade_partials("uniform", "lam", dps, fractions)[first]))
 
 
 def slope_lambda_derivative() -> OnShotBlade:
@@ -281,9 +294,11 @@ def slope_lambda_derivative() -> OnShotBlade:
             for fr in FRACTIONS:
                 truth = derivatives[f"v'@{fr}"]
                 yield Point(f"{name} {fr}", base, truth, relative(truth)), shot(name), None, base["lambda"] * mp.mpf(fr)
-    return OnShotBlade(kind=KIND, truth="5-point stencil in λ of the shot v'(s), s = 0.3λ, 0.8λ fixed, on blades λ(1 + kH) with "
-                             "the same M(s) (pendsym.blade, 30 digits)", points=points, params=level_params,
-                       confirm=confirming(lambda dps: blade_partials("uniform", "lam", dps, FRACTIONS)[f"v'@{FRACTIONS[0]}"]))
+
+    def confirm(dps):
+        return blade_partials("uniform", "lam", dps, FRACTIONS)[f"v'@{FRACTIONS[0]}"]
+    return stencil_values_on_blade(f"5-point stencil in λ of the shot v'(s), s = 0.3λ, 0.8λ fixed, {LAMBDA_STENCIL}",
+                                   points, confirming(confirm))
 
 
 def end_slope_lambda_derivative() -> checks.Values:
@@ -292,12 +307,13 @@ def end_slope_lambda_derivative() -> checks.Values:
         for name in STENCIL_PROFILES[level]:
             truth = end_partial(name)
             yield Point(name, base_values(name, "clock"), truth, relative(truth))
-    return checks.Values(kind=KIND, truth="one-sided 5-point stencil in λ of the shot v'(λ0) (s = λ0 fixed) on blades "
-                               "λ0(1 + kH), k = 0 … 4 (pendsym.blade, 30 digits)", points=points, params=level_params,
-                         confirm=confirming(lambda dps: end_partial("uniform", dps)))
+    return stencil_values("one-sided 5-point stencil in λ of the shot v'(λ0) (s = λ0 fixed) on blades λ0(1 + kH), "
+                          "k = 0 … 4 (pendsym.blade, 30 digits)", points,
+                          confirming(lambda dps: end_partial("uniform", dps)))
 
 
-def _epsilon_kinds(name):
+def epsilon_kinds(name):
+    """The ε(s) of the stiffness stencils on a blade (ε = 1 is skipped on the tapered one)."""
     return [kind for kind in ("lin", "one") if not (kind == "one" and name == "tapered")]
 
 
@@ -307,30 +323,31 @@ def increment() -> OnShotBlade:
     def points(level, dps):
         for name in STENCIL_PROFILES[level]:
             base = base_values(name, "clock")
-            for kind in _epsilon_kinds(name):
+            for kind in epsilon_kinds(name):
                 derivatives = blade_partials(name, kind, DPS, FRACTIONS)
                 for fr in FRACTIONS:
                     truth = derivatives[f"v@{fr}"]
                     yield (Point(f"{name}/ε={kind} {fr}", base, truth, relative(truth)), shot(name),
                            epsilon_function(name, kind), base["lambda"] * mp.mpf(fr))
-    return OnShotBlade(kind=KIND, truth="5-point stencil in h of the shot v(s), s = 0.3λ, 0.8λ fixed, on blades M(s)(1 + hε(s)), "
-                             "ε = 1 + s/λ and ε = 1 (pendsym.blade); A, B by Gauss–Legendre quadrature on the shot",
-                       points=points, params=level_params,
-                       confirm=confirming(lambda dps: blade_partials("uniform", "lin", dps, FRACTIONS)[f"v@{FRACTIONS[0]}"]))
+
+    def confirm(dps):
+        return blade_partials("uniform", "lin", dps, FRACTIONS)[f"v@{FRACTIONS[0]}"]
+    return stencil_values_on_blade(f"5-point stencil in h of the shot v(s), s = 0.3λ, 0.8λ fixed, {EPSILON_STENCIL}, "
+                                   "ε = 1 + s/λ and ε = 1; A, B by Gauss–Legendre quadrature on the shot",
+                                   points, confirming(confirm))
 
 
 def stiffness_derivative(key: str) -> OnShotBlade:
     """(56), (57): d(key) for M → M(1 + hε), ε = 1 + s/λ and ε = 1, against the integral by quadrature."""
     def points(level, dps):
         for name in STENCIL_PROFILES[level]:
-            for kind in _epsilon_kinds(name):
+            for kind in epsilon_kinds(name):
                 truth = blade_partials(name, kind)[key]
                 yield (Point(f"{name}/ε={kind}", base_values(name, "clock"), truth, relative(truth)), shot(name),
                        epsilon_function(name, kind), None)
-    return OnShotBlade(kind=KIND, truth=f"5-point stencil in h of the shot {key} on blades M(s)(1 + hε(s)) (pendsym.blade), "
-                             "the integral by Gauss–Legendre quadrature on the unperturbed shot v, w",
-                       points=points, params=level_params,
-                       confirm=confirming(lambda dps: blade_partials("uniform", "lin", dps)[key]))
+    return stencil_values_on_blade(f"5-point stencil in h of the shot {key} {EPSILON_STENCIL}, the integral by "
+                                   "Gauss–Legendre quadrature on the unperturbed shot v, w", points,
+                                   confirming(lambda dps: blade_partials("uniform", "lin", dps)[key]))
 
 
 def combined_period() -> OnShotBlade:
@@ -340,11 +357,12 @@ def combined_period() -> OnShotBlade:
             for pendulum_name in profiles.PENDULUMS:
                 for i, combination in enumerate(COMBINATIONS):
                     values = combination_values(name, pendulum_name, combination)
-                    yield (Point(f"{name}/{pendulum_name}/combination{i}", values, values["truth"],
-                                 relative(values["truth"])), shot(name), epsilon_of_combination(name, combination), None)
-    return OnShotBlade(kind=KIND, truth="d log T along da, dR, dλ, εM combined (" + "; ".join(map(str, COMBINATIONS)) + "): "
-                             + TRUTH, points=points, params=level_params,
-                       confirm=confirming(lambda dps: partials("uniform", "clock", "lin", dps)["logT"]))
+                    truth = values["truth"]
+                    yield (Point(f"{name}/{pendulum_name}/combination{i}", values, truth, relative(truth)), shot(name),
+                           epsilon_of_combination(name, combination), None)
+    combinations = "; ".join(map(str, COMBINATIONS))
+    return stencil_values_on_blade(f"d log T along da, dR, dλ, εM combined ({combinations}): {TRUTH}", points,
+                                   confirming(lambda dps: partials("uniform", "clock", "lin", dps)["logT"]))
 
 
 def temperature() -> checks.Values:
@@ -363,15 +381,16 @@ def temperature() -> checks.Values:
                 values.update(coefficients)
                 values["G_2"] = sol.G(2, values["K"])
                 yield Point(f"{name}/{pendulum_name}", values, values["truth"], relative(values["truth"]))
-    return checks.Values(kind=KIND, truth=f"d log T per degree, {TEMPERATURE}: α'(a∂_a + R∂_R) + αλ∂_λ + (β + 4α)∂_ε of " + TRUTH,
-                         points=points, params=level_params,
-                         confirm=confirming(lambda dps: partials("uniform", "clock", "one", dps)["logT"]),
-                         note="M(s) kept as a function of s when λ grows (Haag's dλ of n°11), G2 by quadrature")
+    return stencil_values(f"d log T per degree, {TEMPERATURE}: α'(a∂_a + R∂_R) + αλ∂_λ + (β + 4α)∂_ε of {TRUTH}",
+                          points, confirming(lambda dps: partials("uniform", "clock", "one", dps)["logT"]),
+                          note="M(s) kept as a function of s when λ grows (Haag's dλ of n°11), G2 by quadrature")
 
 
 def gravity(which: str) -> checks.Values:
     """(61) (which = "T"): d log T/d log g; (62), (63) (which = "G"): G = 2 d log T/d log g, with
     W = suspension.energy of the principal mode (θ = 1) and Q = K(z − z') of the truth."""
+    factor = 2 if which == "G" else 1
+
     def points(level, dps):
         for name in STENCIL_PROFILES[level]:
             sol = shot(name)
@@ -387,6 +406,5 @@ def gravity(which: str) -> checks.Values:
                     values["Q"] = values["K"] * (values["z"] - values["z'"])
                 yield Point(f"{name}/{pendulum_name}", values, truth, relative(truth))
     what = "2 d log T/d log g" if which == "G" else "d log T/d log g"
-    return checks.Values(kind=KIND, truth=f"{what}: g∂_g log T at fixed blade − ∂_ε log T (ε = 1, M ∝ 1/g), " + TRUTH,
-                         points=points, params=level_params,
-                         confirm=confirming(lambda dps: (2 if which == "G" else 1) * g_truth("uniform", "clock", dps)))
+    return stencil_values(f"{what}: g∂_g log T at fixed blade − ∂_ε log T (ε = 1, M ∝ 1/g), {TRUTH}", points,
+                          confirming(lambda dps: factor * g_truth("uniform", "clock", dps)))
