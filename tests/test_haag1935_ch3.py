@@ -96,7 +96,8 @@ def test_corrected_exponent_agrees(built):
 
 @pytest.mark.slow
 def test_all_checks_pass_quick(built):
-    failed = [r.id for r in built.values() if r.id in IDS and r.spec.check and not pipeline.check(r, "quick").passed]
+    own = [r for r in built.values() if r.id in IDS and r.spec.check and not isinstance(r.spec.check, checks.Chain)]
+    failed = [r.id for r in own if not pipeline.check(r, "quick").passed]
     assert failed == []
 
 

@@ -15,7 +15,7 @@ from pendsym import pipeline, registry
 from pendsym.emit import kernels as kn
 
 BOUND = 4.0
-MEMOIRS = tuple(registry.MEMOIRS)
+MEMOIRS = tuple(registry.memoirs())
 
 
 @pytest.fixture(scope="module")

@@ -2,16 +2,18 @@
 and chapter III, the uniform blade (eqs. (156)–(183))."""
 from pendsym.memoir import Memoir, Section, headings_by
 
-from . import ch1_launch, ch1_motion, ch1_variations, ch3_uniform
+from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
 
-SECTIONS = (
-    Section.of(ch1_motion, "Chapter I. Equations, v and w, end loads, foci and periods (1)–(41)"),
+CHAPTER_1 = (
+    Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
+    Section.of(ch1_motion, "Chapter I. End loads, equations of motion, foci, periods, existence (21)–(41)"),
     Section.of(ch1_variations, "Chapter I. Small variations of the periods, temperature, g (42)–(63)"),
-    Section.of(ch1_launch, "Chapter I. Principal oscillation, launching, shape, fatigue, suppleness, fork (64)–(87)"),
-    *(Section.of(module, title) for module, title in ch3_uniform.sections()),
+    Section.of(ch1_launch, "Chapter I. Principal oscillation and launching (64)–(76)"),
+    Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
-_CH1 = {sec.module for sec in SECTIONS[:3]}
-_CH3 = {sec.module for sec in SECTIONS[3:]}
+SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
+_CH1 = {sec.module for sec in CHAPTER_1}
+_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):]}
 
 
 def _eqs(lo: int, hi: int, modules: set):

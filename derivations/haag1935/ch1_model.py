@@ -1,15 +1,16 @@
-"""Haag 1935, chapter I, n°1–8: the first approximation for any M(s), derived step by step.
+"""Haag 1935, chapter I, n°2–8: the first approximation for any M(s), derived step by step.
 
-Small pure functions shared by the chapter I modules (ch1_motion, ch1_variations,
-ch1_launch).  Each returns SymPy objects derived from the memoir's governing
-equations (2)–(6) and the definitions (9)–(14); nothing here is typed in from a
-result.  v, w are abstract functions of s (any M(s) > 0); their end values are
-the symbols v0, vλ, w0, wλ of :mod:`.symbols`.
+Small pure functions shared by the chapter I sections (ch1_blade, ch1_motion,
+ch1_variations, ch1_launch) and by chapter III.  Each returns SymPy objects
+derived from the memoir's governing equations (2)–(6) and the definitions
+(9)–(14); nothing here is typed in from a result.  v, w are abstract functions
+of s (any M(s) > 0); their end values are the symbols v0, vλ, w0, wλ of
+:mod:`.symbols`.
 
-Notation: q = (β, θ) the end position of the blade (n°1), Y, N the end loads
-(reaction mgY, couple mgN), β'' and θ'' the accelerations (symbols ``bdd``,
-``tdd``), z = GF the abscissa of a focus on the rod measured from G (n°7),
-n² its angular frequency squared.
+Notation (:mod:`.symbols`): (β, θ) the end position of the blade (n°1), Y, N the
+end loads (reaction mgY, couple mgN), β'' and θ'' the accelerations, z = GF the
+abscissa of a focus on the rod measured from G (n°7), n² its angular frequency
+squared.
 """
 from __future__ import annotations
 
@@ -17,22 +18,8 @@ import functools
 
 import sympy as sp
 
-from .symbols import R, Y, a, beta1, g, lam, s, theta, v0, vl, w0, wl, z, zp
-
-beta = sp.Symbol("beta", real=True)          # ordinate of A (n°1)
-N = sp.Symbol("N", real=True)                # couple mgN at A (n°1)
-X = sp.Symbol("X", real=True)                # axial reaction mgX (n°1)
-alpha = sp.Symbol("alpha", real=True)        # abscissa of A (n°1)
-bdd = sp.Symbol("beta''", real=True)         # β''
-tdd = sp.Symbol("theta''", real=True)        # θ''
-thd = sp.Symbol("theta'", real=True)         # θ'
-n2 = sp.Symbol("n^2", positive=True)         # n² (n°7)
-Kp = sp.Symbol("K'", real=True)              # K' (n°8)
-eps = sp.Symbol("epsilon", positive=True)    # order of smallness of θ, φ (n°2)
-
-v = sp.Function("v")
-w = sp.Function("w")
-Mf = sp.Function("M", positive=True)
+from .symbols import (M_of_s, N, R, X, Y, a, beta, beta1, beta_ddot, epsilon, g, lam, n_squared, s, theta,
+                      theta_ddot, theta_dot, v, v0, vl, w, w0, wl, z, zp)
 
 END_VALUES = {v(0): v0, v(lam): vl, w(0): w0, w(lam): wl}
 
@@ -47,7 +34,7 @@ def ends(expr: sp.Expr) -> sp.Expr:
 def wronskian_derivative() -> sp.Expr:
     """d/ds(v w' − w v') with v'' = v/M, w'' = w/M (9): identically 0 (n°3, before (15))."""
     expr = sp.diff(v(s) * w(s).diff(s) - w(s) * v(s).diff(s), s)
-    return sp.simplify(expr.subs({v(s).diff(s, 2): v(s) / Mf(s), w(s).diff(s, 2): w(s) / Mf(s)}))
+    return sp.simplify(expr.subs({v(s).diff(s, 2): v(s) / M_of_s(s), w(s).diff(s, 2): w(s) / M_of_s(s)}))
 
 
 def wronskian_constant() -> sp.Expr:
@@ -87,24 +74,24 @@ def Y_of_end() -> sp.Expr:
 @functools.lru_cache(maxsize=1)
 def N_of_end() -> sp.Expr:
     """N = M_λ φ'_λ = Y vλ + θ wλ ((2) at s = λ with (14)), Y by (23): (24)."""
-    phi_p = (Y * v(lam) + theta * w(lam)) / Mf(lam)              # (14) at s = λ
-    return sp.expand(ends(Mf(lam) * phi_p).subs(Y, Y_of_end()))
+    phi_p = (Y * v(lam) + theta * w(lam)) / M_of_s(lam)              # (14) at s = λ
+    return sp.expand(ends(M_of_s(lam) * phi_p).subs(Y, Y_of_end()))
 
 
 # ---------------------------------------------------------------- n°6: (25)–(26)
 def newton_euler() -> tuple[sp.Expr, sp.Expr]:
     """(5) and (6) written as expression = 0, with α'' = 0 (α = λ to the second order)."""
-    e5 = bdd - a * thd**2 * sp.sin(theta) + a * tdd * sp.cos(theta) + g * Y
-    e6 = R**2 / g * tdd + N - a * (Y * sp.cos(theta) - X * sp.sin(theta))
+    e5 = beta_ddot - a * theta_dot**2 * sp.sin(theta) + a * theta_ddot * sp.cos(theta) + g * Y
+    e6 = R**2 / g * theta_ddot + N - a * (Y * sp.cos(theta) - X * sp.sin(theta))
     return e5, e6
 
 
 def linearized(expr: sp.Expr, extra: tuple = ()) -> sp.Expr:
     """First-order part in ε of expr with θ, θ', θ'', β'', Y, N (and the ``extra`` quantities) of
     order ε and X = 1 + O(ε²) (n°2)."""
-    small = {x: eps * x for x in (theta, thd, tdd, bdd, Y, N, *extra)}
-    small[X] = 1 + eps**2 * X
-    return sp.expand(sp.series(expr.subs(small, simultaneous=True), eps, 0, 2).removeO().coeff(eps))
+    small = {x: epsilon * x for x in (theta, theta_dot, theta_ddot, beta_ddot, Y, N, *extra)}
+    small[X] = 1 + epsilon**2 * X
+    return sp.expand(sp.series(expr.subs(small, simultaneous=True), epsilon, 0, 2).removeO().coeff(epsilon))
 
 
 @functools.lru_cache(maxsize=1)
@@ -112,9 +99,9 @@ def motion() -> tuple[sp.Expr, sp.Expr]:
     """(β'' + aθ'', R²θ'') as functions of β, θ: (5), (6) linearised, Y by (23), N by (24) → (25), (26)."""
     e5, e6 = (linearized(e) for e in newton_euler())
     loads = {Y: Y_of_end(), N: N_of_end()}
-    acc = sp.solve([e5, e6], [bdd, tdd], dict=True)[0]
-    lhs25 = sp.simplify((acc[bdd] + a * acc[tdd]).subs(loads))
-    lhs26 = sp.simplify((R**2 * acc[tdd]).subs(loads))
+    acc = sp.solve([e5, e6], [beta_ddot, theta_ddot], dict=True)[0]
+    lhs25 = sp.simplify((acc[beta_ddot] + a * acc[theta_ddot]).subs(loads))
+    lhs26 = sp.simplify((R**2 * acc[theta_ddot]).subs(loads))
     return lhs25, lhs26
 
 
@@ -127,10 +114,10 @@ def focal_conditions() -> tuple[sp.Expr, sp.Expr]:
     (n²/g)β1 − [1 − z(a − vλ)/R²] and (n²/g)(a + z)β1 − [−β2 + z(…)/R²].
     """
     r25, r26 = motion()
-    tdd_ = r26 / R**2
-    bdd_ = r25 - a * tdd_
-    ydd = bdd_ + (a + z) * tdd_
-    resid = sp.expand(ydd + n2 * (beta + (a + z) * theta))
+    theta_acc = r26 / R**2
+    beta_acc = r25 - a * theta_acc
+    y_acc = beta_acc + (a + z) * theta_acc                         # y'' of (27)
+    resid = sp.expand(y_acc + n_squared * (beta + (a + z) * theta))
     c_beta = sp.expand(resid.coeff(beta) * beta1 / g)
     c_theta = sp.expand(-resid.coeff(theta) * beta1 / g)
     return c_beta, c_theta
@@ -140,8 +127,8 @@ def focal_conditions() -> tuple[sp.Expr, sp.Expr]:
 def foci_quadratic() -> sp.Poly:
     """Eliminate n² between (28) and (29): the monic quadratic in z of (30)."""
     c28, c29 = focal_conditions()
-    n2_ = sp.solve(c28, n2)[0]
-    num = sp.numer(sp.together(c29.subs(n2, n2_)))
+    n_squared_of_z = sp.solve(c28, n_squared)[0]
+    num = sp.numer(sp.together(c29.subs(n_squared, n_squared_of_z)))
     return sp.Poly(sp.expand(num), z).monic()
 
 
@@ -156,7 +143,7 @@ def vieta() -> tuple[sp.Expr, sp.Expr]:
 def n2_of_focus() -> sp.Expr:
     """n² from (28) with z = −R²/z' (31): the form −Kg/z' of (34) with K unreduced."""
     c28, _ = focal_conditions()
-    return sp.simplify(sp.solve(c28, n2)[0].subs(z, -R**2 / zp))
+    return sp.simplify(sp.solve(c28, n_squared)[0].subs(z, -R**2 / zp))
 
 
 @functools.lru_cache(maxsize=1)

@@ -1,8 +1,12 @@
 """What every section of Haag 1935 shares: its key, ids, sources, the v, w reading, precision."""
 from __future__ import annotations
 
+from typing import Callable, Mapping
+
+import sympy as sp
+
 from pendsym import checks
-from pendsym.result import Reading, Source
+from pendsym.result import Reading, Result, Source
 
 MEMOIR = "haag1935"
 DPS, CONFIRM_DPS, TOL = checks.DPS, checks.CONFIRM_DPS, checks.TOL
@@ -15,6 +19,11 @@ def rid(eq: int, name: str) -> str:
     return f"{MEMOIR}.eq{eq:03d}.{name}"
 
 
-def src(para: str, eq: str | None) -> Source:
-    """The source of a Result: paragraph n° and equation number."""
-    return Source(MEMOIR, para, None, eq)
+def src(para: int | str, eq: str | None) -> Source:
+    """The source of a Result: Haag's paragraph (n°para, for a number) and equation number."""
+    return Source(MEMOIR, f"n°{para}" if isinstance(para, int) else para, None, eq)
+
+
+def step(derivation: Callable[[], sp.Basic]) -> Callable[[Mapping[str, Result]], sp.Basic]:
+    """A Spec's ``derive`` for a derivation step that needs no other Result."""
+    return lambda deps: derivation()

@@ -1,0 +1,9 @@
+"""Haag 1935, chapter I, n°21–25, eqs. (77)–(87): shape, fatigue, energy and suppleness, centre of flexion, fork.
+
+:mod:`.derivation` (SymPy), :mod:`.printed` (the text and its readings), :mod:`.truth`
+(the direct blade's shape, curvature, energies and node; the fork's exact glide),
+:mod:`.table` (the Results).
+"""
+from .table import specs
+
+__all__ = ["specs"]
