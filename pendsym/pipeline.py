@@ -10,7 +10,7 @@ from typing import Iterable, Sequence
 import mpmath as mp
 import sympy as sp
 
-from . import cache, checks, registry, schedule, verify
+from . import checks, schedule, verify
 from .result import Evidence, Result
 
 
@@ -126,31 +126,3 @@ def results_json(records: Sequence[Record], kernels: dict[str, list[str]]) -> st
 def load_results_json(path: Path) -> dict[str, dict]:
     data = json.loads(Path(path).read_text(encoding="utf-8"))
     return {r["id"]: r for r in data["results"]}
-
-
-
-
-def through(*downstream: str):
-    """A check for an intermediate step: the independent checks of the Results it feeds.
-
-    The step's derived form is computed, never typed, and flows into each
-    downstream Result; an error in it would show in their fitted orders.
-    The evidence says so (kind "chain") rather than pretending to a check of
-    its own.
-    """
-    def check_step(result: Result, level: str) -> Evidence:
-        built = registry.build(list(downstream))
-        evs = [check(built[d], level) for d in downstream]
-        first = evs[0]
-        return Evidence(kind="chain", passed=all(e is not None and e.passed for e in evs),
-                        truth="through " + ", ".join(downstream) + ": " + "; ".join(e.truth for e in evs if e),
-                        max_residual=first.max_residual, order=first.order, expected_order=first.expected_order,
-                        band=first.band, param=first.param, params=first.params, series=first.series,
-                        note="verified through the Results it feeds")
-    return check_step
-
-
-def definition_check(result: Result, level: str) -> Evidence:
-    """A definition: its derived form must equal the definition as stated (exactly)."""
-    same = result.printed is not None and verify.exactly_equal(result.printed_value, result.derived_value)
-    return Evidence(kind="definition", passed=bool(same), truth="a definition, compared exactly with the text")
