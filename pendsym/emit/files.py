@@ -49,7 +49,7 @@ def c_source(memoir: str, ks: Sequence[kn.Kernel]) -> str:
 
 def c_header(memoir: str, ks: Sequence[kn.Kernel]) -> str:
     return render("kernels.h.j2", memoir=memoir, sources=_sources(ks), contract=kn.CONTRACT,
-                  protos=[(k.docstring(), kn.c_function(k)[0]) for k in ks])
+                  protos=[(k.docstring(), kn.prototype(kn.kernel_function(k.name, k.args, k.expr), "c")) for k in ks])
 
 
 def c_standalone(memoir: str, ks: Sequence[kn.Kernel]) -> str:

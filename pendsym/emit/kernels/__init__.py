@@ -24,7 +24,8 @@ from .kernel import CONTRACT, Kernel, closed_form, kernel_name, kernel_of
 from .leaves import hard_argument, leaf_form, split_hard, stable_forms, vertex_curve
 from .measure import BOUND, Accuracy, Naive, measure, measure_naive, py_callable, references
 from .plan import Grouped
-from .printing import Function, c_function, definition, identifier, kernel_function, printed, py_function
+from .printing import (Function, c_function, definition, identifier, kernel_function, printed, prototype,
+                       py_function)
 from .rules import FAR_FORMS, NEAR_ZERO, REWRITES, SKELETONS, exp_form
 from .sampling import kernel_sample, sample_points, vertex_points
 from .series import KNOTS, SWITCHES, laurent
@@ -35,6 +36,6 @@ __all__ = [
     "REWRITES", "SHARE_MIN", "SKELETONS", "SWITCHES", "c_accuracy", "c_callable", "c_function", "choose_form",
     "closed_form", "compile_c", "definition", "emitted_py", "exp_form", "hard_argument", "identifier",
     "kernel_function", "kernel_name", "kernel_of", "kernel_sample", "laurent", "leaf_form", "measure",
-    "measure_naive", "naive_form", "part_doc", "printed", "py_callable", "py_function", "references",
+    "measure_naive", "naive_form", "part_doc", "printed", "prototype", "py_callable", "py_function", "references",
     "sample_points", "share", "split_hard", "stable_forms", "vertex_curve", "vertex_points",
 ]

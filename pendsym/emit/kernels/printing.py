@@ -172,10 +172,15 @@ class Function:
     callers: tuple[str, ...] = ()
 
 
+def prototype_ast(f: Function) -> FunctionPrototype:
+    """The codegen AST of f's prototype: a double of doubles, ``static`` for a shared part."""
+    return FunctionPrototype(real, f.name, [Variable(p, type=real) for p in f.params],
+                             attrs=(static,) if f.callers else ())
+
+
 def function_ast(f: Function) -> FunctionDefinition:
-    """The codegen AST of a function returning f.expr (a double of doubles)."""
-    params = [Variable(p, type=real) for p in f.params]
-    return FunctionDefinition(real, f.name, params, body(f.expr), attrs=(static,) if f.callers else ())
+    """The codegen AST of a function returning f.expr (its statements: :func:`.plan.body`)."""
+    return FunctionDefinition.from_FunctionPrototype(prototype_ast(f), body(f.expr))
 
 
 @dataclass(frozen=True)
@@ -186,12 +191,15 @@ class Printed:
     body: str
 
 
+def prototype(f: Function, lang: str) -> str:
+    """f's prototype printed in C ("c") or Python ("py")."""
+    return PRINTERS[lang]().doprint(prototype_ast(f))
+
+
 @functools.lru_cache(maxsize=512)
 def printed(f: Function, lang: str) -> Printed:
     """f printed in C ("c") or Python ("py")."""
-    fd = function_ast(f)
-    printer = PRINTERS[lang]()
-    return Printed(printer.doprint(FunctionPrototype.from_FunctionDefinition(fd)), printer.doprint(fd.body))
+    return Printed(prototype(f, lang), PRINTERS[lang]().doprint(function_ast(f).body))
 
 
 def kernel_function(name: str, args: Sequence[KernelArg], expr: sp.Expr) -> Function:
