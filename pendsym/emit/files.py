@@ -1,16 +1,16 @@
-"""Lay out generated files with Jinja; every file is headed by its sources and a content hash."""
+"""Lay out generated files with Jinja; every file is headed by its sources and a content hash.
+
+The functions of a memoir's file are its kernels, and the parts that several of them share
+(:func:`.kernels.share`), each printed once; docstrings and comments give each kernel's own
+figures, and the accuracy contract is docs/kernel-accuracy.md.
+"""
 from __future__ import annotations
 
 from typing import Sequence
 
-import jinja2
-
 from ..io import content_hash
 from . import kernels as kn
-
-ENV = jinja2.Environment(loader=jinja2.PackageLoader("pendsym", "templates"), autoescape=False,
-                         keep_trailing_newline=True, trim_blocks=True, lstrip_blocks=True,
-                         undefined=jinja2.StrictUndefined)
+from .layout import ENV
 
 
 def render(template: str, **ctx) -> str:
@@ -24,17 +24,32 @@ def _sources(ks: Sequence[kn.Kernel]) -> str:
     return ", ".join(mods)
 
 
+def _functions(ks: Sequence[kn.Kernel]) -> tuple[kn.Function, ...]:
+    """The file's functions in order: the kernels, each after the shared parts it calls."""
+    return kn.share(tuple(kn.kernel_function(k.name, k.args, k.expr) for k in ks))
+
+
+def _definitions(ks: Sequence[kn.Kernel], lang: str, docs: bool) -> list[str]:
+    """Every function of the file printed in lang; with `docs`, the kernels' docstrings (the
+    parts always carry theirs)."""
+    doc = {k.name: k.docstring() for k in ks} if docs else {}
+    return [kn.definition(f, lang, kn.part_doc(f) if f.callers else doc.get(f.name, ""))
+            for f in _functions(ks)]
+
+
 def python_module(memoir: str, ks: Sequence[kn.Kernel]) -> str:
     return render("kernels.py.j2", memoir=memoir, sources=_sources(ks), names=[k.name for k in ks],
-                  functions=[kn.py_function(k) for k in ks])
+                  functions=_definitions(ks, "py", docs=True), contract=kn.CONTRACT)
 
 
 def c_source(memoir: str, ks: Sequence[kn.Kernel]) -> str:
-    return render("kernels.c.j2", memoir=memoir, sources=_sources(ks), functions=[kn.c_function(k)[1] for k in ks])
+    return render("kernels.c.j2", memoir=memoir, sources=_sources(ks), functions=_definitions(ks, "c", docs=False),
+                  contract=kn.CONTRACT)
 
 
 def c_header(memoir: str, ks: Sequence[kn.Kernel]) -> str:
-    return render("kernels.h.j2", memoir=memoir, sources=_sources(ks), protos=[(k, kn.c_function(k)[0]) for k in ks])
+    return render("kernels.h.j2", memoir=memoir, sources=_sources(ks), contract=kn.CONTRACT,
+                  protos=[(k.docstring(), kn.prototype(kn.kernel_function(k.name, k.args, k.expr), "c")) for k in ks])
 
 
 def c_standalone(memoir: str, ks: Sequence[kn.Kernel]) -> str:

@@ -1,0 +1,115 @@
+"""Choice of form: the candidate of least measured error among the named rules.
+
+First the whole-expression rewrites (:data:`.rules.REWRITES`, with the near-zero series
+variant), ranked on 60 random points; if the best does not hold the bound on the full
+sample (hard points included), the piecewise stable forms of :mod:`.leaves` compete on it.
+Also here: the naive form a kernel is compared with.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import mpmath as mp
+import sympy as sp
+
+from ...result import KernelArg, Result
+from .leaves import hard_argument, stable_forms
+from .measure import BOUND, Accuracy, measure, py_callable
+from .rules import NEAR_ZERO, REWRITES
+from .sampling import kernel_sample, sample_points, vertex_points
+
+RANK_POINTS = 60        # random points the rewrites are ranked on
+SAME_POINTS = 8         # points a rewrite must agree with the derived form on (double, 1e-9)
+
+
+@dataclass(frozen=True)
+class Choice:
+    rule: str
+    form: sp.Expr
+    accuracy: Accuracy
+    notes: tuple[str, ...] = ()     # the pieces of a stable form, with their measured errors
+
+
+def _candidates(expr: sp.Expr, args: Sequence[KernelArg], seed: str):
+    """(name, form) of every rewrite that applies and keeps the function, each also with the
+    near-zero series below its phase where the form has one."""
+    near = NEAR_ZERO.series(expr, args)
+    trig = expr.has(sp.sin, sp.cos)
+    for rule in REWRITES:
+        if rule.trig and not trig:
+            continue
+        try:
+            cand = rule(expr)
+        except Exception:  # a rule that does not apply is skipped
+            continue
+        if (rule.name != "as-derived" and cand == expr) or not _same_numerically(cand, expr, args, seed):
+            continue          # (a rule that changes nothing would only tie with the derived form)
+        yield rule.name, cand
+        if near is not None:
+            yield f"{rule.name}+{NEAR_ZERO.name}", NEAR_ZERO(cand, near)
+
+
+def choose_form(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> Choice:
+    """The rewrite whose Python evaluation is the most accurate (ties: rule order); when none
+    holds BOUND and one argument alone feeds the transcendental functions, the piecewise
+    stable forms of :func:`.leaves.stable_forms` compete."""
+    pts = sample_points(args, seed, RANK_POINTS, hard=False)   # the rules are ranked as before the stable forms
+    best = None
+    for name, form in _candidates(expr, args, seed):
+        acc = measure(py_callable(form, args), expr, args, pts)
+        if best is None or acc.max_scaled < best.accuracy.max_scaled:
+            best = Choice(name, form, acc)
+    full = kernel_sample(expr, args, seed)
+    # decided on the full sample: the hard points of the stable pieces are there
+    on_full = measure(py_callable(best.form, args), expr, args, full)
+    if best.accuracy.max_scaled <= BOUND and on_full.max_scaled <= BOUND:
+        return best
+    best = Choice(best.rule, best.form, on_full)
+    # the vertex form competes where the vertex lies inside the domain
+    for label, form, notes in stable_forms(expr, args, vertex=bool(vertex_points(expr, tuple(args), seed))):
+        acc = measure(py_callable(form, args), expr, args, full)
+        if acc.max_scaled < best.accuracy.max_scaled:
+            hard = hard_argument(expr, args).name
+            best = Choice(f"piecewise in {hard}: series below a switch, e^(-{hard}) or derived form above{label}",
+                          form, acc, notes)
+    return best
+
+
+def _same_numerically(a, b, args, seed) -> bool:
+    """A rewrite must not change the function: compare at 8 interior points in double."""
+    fa, fb = (py_callable(x, args) for x in (a, b))
+    for p in sample_points(args, seed, SAME_POINTS, hard=False)[-SAME_POINTS:]:
+        va, vb = fa(*p), fb(*p)
+        if abs(va - vb) > 1e-9 * max(1.0, abs(vb)):
+            return False
+    return True
+
+
+def naive_form(result: Result, args: Sequence[KernelArg]) -> tuple[str, sp.Expr]:
+    """("printed", the printed formula with its symbols read the obvious way in double), when it is
+    the same function as the derived one (checked at three points at 50 digits); otherwise
+    ("as derived", the derived form evaluated as it stands)."""
+    names = {a.name for a in args}
+    if result.printed is not None:
+        defs = result.spec.kernel.naive_defs or result.spec.defs
+        pv = result.printed.subs(dict(defs), simultaneous=True)
+        if {s.name for s in pv.free_symbols} <= names and _same_function(pv, result.derived, args):
+            return "printed", pv
+    return "as derived", result.derived
+
+
+def _same_function(a: sp.Expr, b: sp.Expr, args: Sequence[KernelArg]) -> bool:
+    fa, fb = (sp.lambdify([sp.Symbol(x.name, **_assumptions(e, x.name)) for x in args], e, modules="mpmath")
+              for e in (a, b))
+    with mp.workdps(50):
+        for p in sample_points(args, "same", 3, hard=False)[-3:]:
+            va, vb = fa(*[mp.mpf(v) for v in p]), fb(*[mp.mpf(v) for v in p])
+            if abs(va - vb) > mp.mpf(10) ** -30 * max(1, abs(vb)):
+                return False
+    return True
+
+
+def _assumptions(e: sp.Expr, name: str) -> dict:
+    s = next((x for x in e.free_symbols if x.name == name), None)
+    return s.assumptions0 if s is not None else {}

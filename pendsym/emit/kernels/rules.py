@@ -1,0 +1,241 @@
+"""Named rewrite rules: small objects grouped in tuples, as in ``sympy.codegen.rewriting``.
+
+Each rule is a frozen object with a name (the one a kernel's docstring shows) and a pure
+rewrite; the choice of form (:mod:`.choice`) and the stable-form synthesis (:mod:`.leaves`)
+walk the tuples in order, and measurement decides.
+
+- :data:`REWRITES`: rewrites of a whole expression (factor, trigonometric bases, Horner…);
+- :data:`NEAR_ZERO`: the series in t of a form that cancels as t → 0, used below a phase;
+- :data:`FAR_FORMS`: the forms of a leaf c(x) (a function of the hard argument alone) for
+  large x: as derived, in e^{−x/q} with expm1, or its limit plus an e^{−x} remainder;
+- :data:`SKELETONS`: the forms of the skeleton around the leaves: plain, or vertex form.
+
+The series of a leaf below a switch and its Taylor pieces between knots (the near and
+middle pieces, with SWITCHES and KNOTS) are the rules of :mod:`.series`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+import sympy as sp
+from sympy.codegen.cfunctions import expm1
+
+from ...result import KernelArg
+
+# ----------------------------------------------------------------- whole-expression rewrites
+
+
+@dataclass(frozen=True)
+class Rewrite:
+    """A named rewrite of a whole expression (a callable object, like ``ReplaceOptim``);
+    `trig`: tried only on forms with sin or cos."""
+
+    name: str
+    apply: Callable[[sp.Expr], sp.Expr]
+    trig: bool = False
+
+    def __call__(self, e: sp.Expr) -> sp.Expr:
+        return self.apply(e)
+
+
+def _even_powers_in(e: sp.Expr, old, new) -> sp.Expr:
+    """Even powers of old(y) → powers of (1 − new(y)²), then factor."""
+    e = sp.expand(sp.expand_trig(e))
+    e = e.replace(lambda x: x.is_Pow and x.base.func == old and x.exp.is_even and x.exp > 0,
+                  lambda x: (1 - new(x.base.args[0]) ** 2) ** (x.exp // 2))
+    return sp.factor(sp.expand(e))
+
+
+def sin_basis(e: sp.Expr) -> sp.Expr:
+    """Even powers of cos → powers of (1 − sin²), then factor (good near kt = 0)."""
+    return _even_powers_in(e, sp.cos, sp.sin)
+
+
+def cos_basis(e: sp.Expr) -> sp.Expr:
+    """Even powers of sin → powers of (1 − cos²), then factor."""
+    return _even_powers_in(e, sp.sin, sp.cos)
+
+
+def half_angle(e: sp.Expr) -> sp.Expr:
+    """1 − cos x cancels for small x: cos x = 1 − 2 sin²(x/2), then factor."""
+    return sp.factor(sp.expand(e.replace(sp.cos, lambda x: 1 - 2 * sp.sin(x / 2) ** 2)))
+
+
+REWRITES: tuple[Rewrite, ...] = (
+    Rewrite("as-derived", lambda e: e),
+    Rewrite("factor", sp.factor),
+    Rewrite("expand-trig", lambda e: sp.factor(sp.expand(sp.expand_trig(e))), trig=True),
+    Rewrite("sin-basis", sin_basis, trig=True),
+    Rewrite("cos-basis", cos_basis, trig=True),
+    Rewrite("horner", lambda e: sp.horner(sp.expand(e)) if e.is_polynomial() else e),
+    Rewrite("half-angle", half_angle, trig=True),
+)
+
+# ----------------------------------------------------------------- series near t = 0
+
+
+@dataclass(frozen=True)
+class SeriesNearZero:
+    """The Taylor series in t of a form that cancels as t → 0 (kt − sin kt cos kt …), used
+    where the phase k·t (t without k) is below `phase`.  With 44 orders kept, the truncation
+    at k·t = 0.35 is below 2e-18 relative to a leading term of order ≤ 5."""
+
+    name: str = "series-near-t=0"
+    order: int = 44
+    phase: sp.Rational = sp.Rational(7, 20)
+
+    def series(self, e: sp.Expr, args: Sequence[KernelArg]) -> tuple[sp.Expr, sp.Expr] | None:
+        """(series, phase), or None when t is not an argument from 0 or the series vanishes."""
+        by = {x.name: x for x in e.free_symbols}
+        if "t" not in by or not any(a.name == "t" and a.lo == 0 for a in args):
+            return None
+        t = by["t"]
+        ser = sp.series(e, t, 0, self.order).removeO()
+        if ser == 0:
+            return None
+        phase = by["k"] * t if "k" in by else t
+        # rational coefficients become 20-digit floats (exact to double), so no huge integer literals
+        return sp.horner(sp.N(sp.collect(sp.expand(ser), t), 20), wrt=t), phase
+
+    def __call__(self, form: sp.Expr, near: tuple[sp.Expr, sp.Expr]) -> sp.Expr:
+        """form, with the series (from :meth:`series`) below the phase."""
+        ser, phase = near
+        return sp.Piecewise((ser, phase < self.phase), (form, True))
+
+
+NEAR_ZERO = SeriesNearZero()
+
+# ----------------------------------------------------------------- far forms of a leaf c(x)
+
+
+def _in_E(c: sp.Expr, x: sp.Symbol) -> tuple[sp.Expr, sp.Expr, sp.Symbol, int] | None:
+    """(num, den, E, q): c = num/den, polynomials in E = e^{−x/q} (and x), or None when c is
+    not a function of exponentials of rational multiples of x."""
+    ex = c.rewrite(sp.exp)
+    exps = [a for a in ex.atoms(sp.exp) if a.has(x)]
+    ratios = [sp.simplify(a.args[0] / x) for a in exps]
+    if not exps or not all(r.is_Rational for r in ratios):
+        return None
+    q = sp.ilcm(*[r.q for r in ratios])
+    E = sp.Symbol("E_x", positive=True)
+    ex = ex.replace(lambda a: isinstance(a, sp.exp) and a.has(x), lambda a: E ** (-sp.simplify(a.args[0] / x) * q))
+    if any(f.has(x) for f in ex.atoms(sp.Function)):
+        return None
+    num, den = sp.fraction(sp.cancel(sp.together(ex)))
+    return num, den, E, q
+
+
+def _stable_in_E(p: sp.Expr, E: sp.Symbol, x: sp.Symbol, q: int) -> sp.Expr:
+    """p (a polynomial in E) factored, each factor c(E^j − 1) written c·expm1(−j x/q), E = e^{−x/q}."""
+    cf, facs = sp.factor_list(p)
+    out = cf
+    for f, m in facs:
+        terms = sp.Poly(f, E).terms() if f.free_symbols == {E} else None
+        if terms and len(terms) == 2 and terms[1][0] == (0,) and terms[0][1] == -terms[1][1]:
+            j = terms[0][0][0]          # c(E^j − 1) = c·expm1(−j x/q)
+            f = terms[0][1] * expm1(-j * x / q)
+        out *= f**m
+    return out.subs(E, sp.exp(-x / q))
+
+
+def exp_form(c: sp.Expr, x: sp.Symbol) -> sp.Expr | None:
+    """c (exponentials or hyperbolic functions of rational multiples of x) as a rational
+    function of E = e^{−x/q}, factored; each factor E^j − 1 is written with expm1."""
+    got = _in_E(c, x)
+    if got is None:
+        return None
+    num, den, E, q = got
+    return _stable_in_E(num, E, x, q) / _stable_in_E(den, E, x, q)
+
+
+def asymptotic_form(c: sp.Expr, x: sp.Symbol) -> sp.Expr | None:
+    """c = L(x) + R(x): L, the limit of the e^{−x/q} form as E = e^{−x/q} → 0 (a rational
+    function of x, factored), and R = c − L, which carries a factor E^k (written as in
+    :func:`exp_form`).  Where R ≪ L the error is L's alone: no power of an expm1 or of
+    1 + E multiplies its rounding.  None when L or the denominator vanishes at E = 0."""
+    got = _in_E(c, x)
+    if got is None:
+        return None
+    num, den, E, q = got
+    n0, d0 = num.subs(E, 0), den.subs(E, 0)
+    if n0 == 0 or d0 == 0:
+        return None
+    rn, rd = sp.fraction(sp.cancel((num * d0 - n0 * den) / (den * d0)))
+    return sp.factor(n0 / d0) + _stable_in_E(rn, E, x, q) / _stable_in_E(rd, E, x, q)
+
+
+@dataclass(frozen=True)
+class FarForm:
+    """A named form of a leaf c(x) for large x: `label` names it ({x}: the argument's name);
+    `apply(c, x)` gives the form, or None where the rule does not apply."""
+
+    label: str
+    apply: Callable[[sp.Expr, sp.Symbol], sp.Expr | None]
+
+    def name(self, x: str) -> str:
+        return self.label.format(x=x)
+
+    def __call__(self, c: sp.Expr, x: sp.Symbol) -> sp.Expr | None:
+        return self.apply(c, x)
+
+
+FAR_FORMS: tuple[FarForm, ...] = (
+    FarForm("as derived", lambda c, x: c),
+    FarForm("e^{{-{x}}} form", exp_form),
+    FarForm("limit in 1/{x} plus e^{{-{x}}} remainder", asymptotic_form),
+)
+
+# ----------------------------------------------------------------- forms of the skeleton
+
+
+def quadratic_vertex(skeleton: sp.Expr, leaves: dict) -> tuple | None:
+    """(K, A, c, D): a skeleton quadratic in one argument K, A K² + B K + C with B/A and C/A
+    functions of the hard argument alone (in the leaf symbols), as A[(K − c)² + D] with
+    c = −B/(2A), D = C/A − c²; None if no argument qualifies."""
+    hard = set(leaves)
+    for K in sorted(skeleton.free_symbols - hard, key=lambda s: s.name):
+        try:
+            poly = sp.Poly(skeleton, K)
+        except sp.PolynomialError:
+            continue
+        if poly.degree() != 2:
+            continue
+        A, B, C = poly.all_coeffs()
+        r, q = sp.cancel(B / A), sp.cancel(C / A)
+        if (r.free_symbols | q.free_symbols) <= hard:
+            return K, A, -r / 2, q - r**2 / 4
+    return None
+
+
+def vertex_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | None:
+    """The skeleton in vertex form P[a(K − c)² + aD] (:func:`quadratic_vertex`, A = P·a with a the part
+    of A in the leaves), c and aD new leaves (on the vertex the value is then one leaf, not a
+    product).  Near the vertex the three terms of the plain form cancel, and the rounding of
+    its leaves is amplified by Σ|terms|/|value|, not by the condition number; in vertex form
+    the cancellation is inside the leaf D, which gets its own stable form."""
+    vx = quadratic_vertex(skeleton, leaves)
+    if vx is None:
+        return None
+    K, A, c, D = vx
+    P, a = A.as_independent(*leaves)          # A = P·a, a the part in the leaves: A(K − c)² + P·(aD)
+    c_sym, e_sym = sp.Symbol(f"leaf_{len(leaves)}"), sp.Symbol(f"leaf_{len(leaves) + 1}")
+    new = {**leaves, c_sym: sp.together(c.xreplace(leaves)), e_sym: sp.together((a * D).xreplace(leaves))}
+    return P * (a * (K - c_sym) ** 2 + e_sym), new
+
+
+@dataclass(frozen=True)
+class SkeletonForm:
+    """A named form of a skeleton and its leaves: `apply(skeleton, leaves)` gives
+    (skeleton, leaves), or None where it does not apply; `label` is appended to the rule's name."""
+
+    label: str
+    apply: Callable[[sp.Expr, dict], tuple[sp.Expr, dict] | None]
+
+    def __call__(self, skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | None:
+        return self.apply(skeleton, leaves)
+
+
+PLAIN = SkeletonForm("", lambda skeleton, leaves: (skeleton, leaves))
+VERTEX = SkeletonForm(", in vertex form", vertex_form)
+SKELETONS: tuple[SkeletonForm, ...] = (PLAIN, VERTEX)
