@@ -206,14 +206,6 @@ def proof(*, statement: str, holds: bool, truth_desc: str, note: str = "") -> Ev
     return Evidence(kind="proof", passed=bool(holds), truth=truth_desc, note=statement + (" " + note if note else ""))
 
 
-def combine(*evs: Evidence, truth_desc: str | None = None) -> Evidence:
-    """Several checks of one Result: passed only if all pass; the first carries the series."""
-    first = evs[0]
-    notes = " ; ".join(e.note for e in evs if e.note)
-    return Evidence(**{**first.__dict__, "passed": all(e.passed for e in evs),
-                       "truth": truth_desc or " + ".join(e.truth for e in evs), "note": notes})
-
-
 def _instantiate(expr: sp.Expr, inst) -> sp.Expr:
     """Replace each arbitrary function by its test function and evaluate derivatives."""
     for fn, lam in inst:
