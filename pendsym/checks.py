@@ -9,14 +9,17 @@ built in one place from what was measured.
 
 Kinds
 -----
-* :class:`Values`     formula against a truth computed from the governing model, at points;
+* :class:`Values`     formula against a truth computed from the governing model, at points (a Tuple
+                      form component by component; a vanishing form relative to Σ|terms|; or a
+                      counterexample, ``fails_by``);
 * :class:`Order`      fitted order of the residual over a geometric sequence of the small parameter
                       (rule of evidence 3); see :func:`pendsym.verify.order_check`;
 * :class:`Inequality` a quantity the memoir claims positive, with its margins;
 * :class:`Proof`      an exact symbolic statement about the derived form;
 * :class:`Chain`      a step verified through the Results it feeds: the pipeline fills in their
                       evidence after they ran (no check rebuilds the registry);
-* :class:`Definition` a pure definition: compared exactly with the text, never counted as verified;
+* :class:`Definition` a pure definition: compared exactly with the text (componentwise for a Tuple),
+                      never counted as verified;
 * :class:`All`        several checks of one Result, passed only if all pass.
 
 A plain callable ``check(result, level) -> Evidence`` is still accepted by
@@ -25,7 +28,7 @@ A plain callable ``check(result, level) -> Evidence`` is still accepted by
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable, Iterable, Mapping, Sequence
 
 import mpmath as mp
@@ -41,21 +44,51 @@ MIN_DIGITS = 28             # the two precisions must agree to this many digits
 
 @dataclass(frozen=True)
 class Point:
-    """One comparison: the formula at ``env`` against ``truth``.
+    """One comparison: the formula (its component ``component`` when it is a Tuple) at ``env``
+    against ``truth``.
 
-    The residual is |formula − truth| / denom; denom defaults to max(|truth|, 1)
-    (relative for large values, absolute for small ones).
+    The residual is |formula − truth| / denom; denom defaults to max(|truth|, 1) (relative for
+    large values, absolute for small ones); ``denom="terms"`` scales by Σ|terms| of the expanded
+    formula at env (for a quantity that must vanish: truth 0).
     """
 
     label: str
     env: Mapping
     truth: object
     denom: object = None
+    component: int | None = None
 
-    def residual(self, value) -> mp.mpf:
+    def residual(self, value, terms=None) -> mp.mpf:
         t = mp.mpf(self.truth)
-        den = max(abs(t), mp.mpf(1)) if self.denom is None else mp.mpf(self.denom)
+        if isinstance(self.denom, str):
+            den = mp.mpf(terms)
+        else:
+            den = max(abs(t), mp.mpf(1)) if self.denom is None else mp.mpf(self.denom)
         return abs(mp.mpf(value) - t) / den
+
+    def compare(self, form: sp.Basic) -> mp.mpf:
+        """The residual of a form (derived or printed) at this point."""
+        if self.component is not None:
+            form = form[self.component]
+        terms = terms_scale(form, self.env) if self.denom == "terms" else None
+        return self.residual(verify.value_at(form, self.env), terms)
+
+
+def terms_scale(expr: sp.Expr, env: Mapping) -> mp.mpf:
+    """Σ|terms| of the expanded expr at env: the scale of a quantity that should vanish."""
+    return sum((abs(mp.mpf(verify.value_at(tm, env))) for tm in sp.Add.make_args(sp.expand(expr))), mp.mpf(0))
+
+
+@dataclass(frozen=True)
+class Geometric:
+    """The small parameter's values of an order check: ``verify.LEVELS[level]`` points, in
+    geometric progression from lo to hi."""
+
+    lo: str
+    hi: str
+
+    def __call__(self, level: str) -> list:
+        return verify.geometric(self.lo, self.hi, verify.LEVELS[level])
 
 
 @dataclass(frozen=True)
@@ -66,6 +99,9 @@ class Values:
     truth values (the first point's truth, and whatever the truth rests on) at a
     precision: the engine calls it at ``DPS`` and ``CONFIRM_DPS`` and requires
     ``MIN_DIGITS`` of agreement on every nonzero value.
+
+    With ``fails_by``, the check is a counterexample: it passes when the derived form is off the
+    truth by more than ``fails_by`` at every point (its evidence reports the least residual).
     """
 
     truth: str
@@ -76,6 +112,7 @@ class Values:
     params: Callable[[str], tuple] | tuple = ()
     note: str = ""
     work_dps: int = 40
+    fails_by: object = None
 
 
 @dataclass(frozen=True)
@@ -155,8 +192,8 @@ def run(check, result, level: str = "full") -> Evidence | None:
         return verify.proof(statement=check.statement, holds=bool(check.holds(result.derived)),
                             truth_desc=check.truth)
     if isinstance(check, Definition):
-        same = result.printed is not None and verify.exactly_equal(result.printed_value, result.derived_value)
-        return Evidence(kind="definition", passed=bool(same), truth="a definition, compared exactly with the text")
+        return Evidence(kind="definition", passed=_same_exactly(result),
+                        truth="a definition, compared exactly with the text")
     if isinstance(check, All):
         return _all([run(c, result, level) for c in check.checks], check.truth)
     return check(result, level)     # a custom check (built with pendsym.verify)
@@ -183,8 +220,19 @@ def confirmation_digits(confirm: Callable[[int], Mapping[str, object]] | None) -
         lo = dict(confirm(DPS))
     with mp.workdps(CONFIRM_DPS + 10):
         hi = dict(confirm(CONFIRM_DPS))
-    ds = [verify.truth_digits(lo[k], hi[k]) for k in lo if k in hi and lo[k] != 0]
+        # compared at the higher precision: at the caller's precision two values could look equal
+        ds = [verify.truth_digits(lo[k], hi[k]) for k in lo if k in hi and lo[k] != 0]
     return min(ds) if ds else float(CONFIRM_DPS)
+
+
+def _same_exactly(result) -> bool:
+    """The printed form equals the derived one exactly (componentwise for a Tuple)."""
+    printed, derived = result.printed_value, result.derived_value
+    if printed is None:
+        return False
+    if isinstance(derived, sp.Tuple) or isinstance(printed, sp.Tuple):
+        return len(printed) == len(derived) and all(verify.exactly_equal(p, d) for p, d in zip(printed, derived))
+    return bool(verify.exactly_equal(printed, derived))
 
 
 def _forms(result) -> list[tuple[str, sp.Basic]]:
@@ -195,13 +243,15 @@ def _forms(result) -> list[tuple[str, sp.Basic]]:
 
 
 def _values(check: Values, result, level: str) -> Evidence:
+    if check.fails_by is not None:
+        return _counterexample(check, result, level)
     worst = {name: mp.mpf(0) for name, _ in _forms(result)}
     labels = []
     with mp.workdps(check.work_dps):
         for pt in check.points(level, DPS):
             labels.append(pt.label)
             for name, form in _forms(result):
-                worst[name] = max(worst[name], pt.residual(verify.value_at(form, pt.env)))
+                worst[name] = max(worst[name], pt.compare(form))
     digits = confirmation_digits(check.confirm)
     tol = mp.mpf(check.tol)
     passed = worst["derived"] < tol and (digits is None or digits >= MIN_DIGITS)
@@ -219,6 +269,16 @@ def _values(check: Values, result, level: str) -> Evidence:
                     confirm_digits=None if digits is None else verify.rounded(digits), note=note)
 
 
+def _counterexample(check: Values, result, level: str) -> Evidence:
+    """A Values check with ``fails_by``: the derived form must miss the truth at every point."""
+    with mp.workdps(check.work_dps):
+        residuals = [(pt.label, pt.compare(result.derived_value)) for pt in check.points(level, DPS)]
+    least = min(res for _, res in residuals)
+    note = "must fail; relative residual " + "; ".join(f"{label}: {mp.nstr(res, 3)}" for label, res in residuals)
+    return Evidence(kind=check.kind, passed=bool(least > mp.mpf(check.fails_by)), truth=check.truth,
+                    max_residual=verify.rounded(least), note=note)
+
+
 def _order(check: Order, result, level: str) -> Evidence:
     printed = result.printed_value
     return verify.order_check(
@@ -229,17 +289,12 @@ def _order(check: Order, result, level: str) -> Evidence:
         dps=check.dps, confirm_dps=check.confirm_dps, note=check.note)
 
 
-def _abs_terms(expr: sp.Expr, env: Mapping) -> mp.mpf:
-    """Σ|terms| of the expanded expr at env: the scale of a quantity claimed positive."""
-    return sum((abs(mp.mpf(verify.value_at(tm, env))) for tm in sp.Add.make_args(sp.expand(expr))), mp.mpf(0))
-
-
 def _inequality(check: Inequality, result, level: str) -> Evidence:
     margins, ok = [], True
     with mp.workdps(40):
         for label, env in check.points(level, DPS):
             value = mp.mpf(verify.value_at(result.derived_value, env))
-            scale = _abs_terms(result.derived_value, env)
+            scale = terms_scale(result.derived_value, env)
             ok &= bool(value > scale * check.margin)
             if result.printed is not None:
                 ok &= bool(mp.mpf(verify.value_at(result.printed_value, env)) > scale * check.margin)

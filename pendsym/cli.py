@@ -31,8 +31,9 @@ class Parser(argparse.ArgumentParser):
         raise UsageError(message)
 
 
-def _parser() -> Parser:
-    keys = ", ".join(registry.memoirs())
+def _parser(with_keys: bool = True) -> Parser:
+    """The argument parser; the memoir keys in the help need the memoirs imported (with_keys)."""
+    keys = ", ".join(registry.memoirs()) if with_keys else "see pendsym list --help"
     p = Parser(prog="pendsym", description="Rebuild and check the classical perturbation theory of the pendulum.",
                epilog="exit codes: 0 success, 1 a check failed, 2 bad input, 130 interrupted")
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser, metavar="{list,derive,check,scene}")
@@ -189,7 +190,8 @@ def main(argv=None) -> int:
         if not argv:
             _parser().print_help()
             return 0
-        args = _parser().parse_args(argv)
+        asks_help = any(a in ("-h", "--help") for a in argv)
+        args = _parser(with_keys=asks_help).parse_args(argv)
         return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check, "scene": cmd_scene}[args.cmd](args)
     except (UsageError, registry.UnknownResult, scene.SceneError, stages.OutputError) as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)

@@ -118,6 +118,11 @@ class Spec:
         return self.source.memoir
 
 
+def printed(expr: sp.Basic) -> Callable[[], sp.Basic]:
+    """A transcription held as data, in the form a Spec asks for (a function giving it)."""
+    return lambda: expr
+
+
 @dataclass(frozen=True)
 class Result:
     """A built Result: its Spec, the printed and the derived expressions."""

@@ -9,11 +9,12 @@ words (its incipit: the OCR's words, its formulas transcribed and its misreading
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 
 import sympy as sp
 
-from pendsym import checks, verify
+from pendsym import checks
+from pendsym.checks import Geometric  # noqa: F401  (the memoir's sections import it from here)
+from pendsym.result import printed  # noqa: F401
 from pendsym.result import Reading, Source
 
 MEMOIR = "cellerier"
@@ -52,22 +53,6 @@ def rid(name: str) -> str:
 def src(paragraph: str, quote: str) -> Source:
     """The source of a Result: the paragraph it stands under (by its incipit) and a quote of the text."""
     return Source(MEMOIR, f"« {PARAGRAPHS[paragraph]} … »", None, None, quote)
-
-
-def printed(expr: sp.Basic):
-    """A transcription held as data, in the form a Spec asks for (a function giving it)."""
-    return lambda: expr
-
-
-@dataclass(frozen=True)
-class Geometric:
-    """The small parameter's values of an order check: ``LEVELS[level]`` points from lo to hi."""
-
-    lo: str
-    hi: str
-
-    def __call__(self, level: str) -> list:
-        return verify.geometric(self.lo, self.hi, verify.LEVELS[level])
 
 
 def proof_of(expected) -> checks.Proof:

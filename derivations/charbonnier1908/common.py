@@ -2,11 +2,11 @@
 several paragraphs, the precision and parameters of the checks, and the kernel arguments."""
 from __future__ import annotations
 
-from dataclasses import dataclass
 
-import sympy as sp
 
-from pendsym import checks, verify
+from pendsym import checks
+from pendsym.checks import Geometric  # noqa: F401  (the memoir's sections import it from here)
+from pendsym.result import printed  # noqa: F401
 from pendsym.result import KernelArg, Reading, Source
 
 MEMOIR = "charbonnier1908"
@@ -24,22 +24,6 @@ def rid(paragraph: int, name: str) -> str:
 def src(para: str, page: int) -> Source:
     """The source of a Result: paragraph n° (and item) and the page of the printed memoir."""
     return Source(MEMOIR, para, page)
-
-
-def printed(expr: sp.Basic):
-    """A transcription held as data, in the form a Spec asks for (a function giving it)."""
-    return lambda: expr
-
-
-@dataclass(frozen=True)
-class Geometric:
-    """The small parameter's values of an order check: ``LEVELS[level]`` points from lo to hi."""
-
-    lo: str
-    hi: str
-
-    def __call__(self, level: str) -> list:
-        return verify.geometric(self.lo, self.hi, verify.LEVELS[level])
 
 
 EPSILONS = Geometric("1e-4", "1e-2")   # ε of the oscillator checks

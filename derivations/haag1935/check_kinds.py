@@ -1,16 +1,9 @@
-"""Check kinds that :mod:`pendsym.checks` lacks, written once for the memoir.
+"""The check adapter this memoir needs beyond :mod:`pendsym.checks`, written once.
 
-Each is a frozen declaration called as ``check(result, level)`` (the engine runs
-such a callable as a custom check) and builds its Evidence once, with the
-engine's confirmation (:func:`pendsym.checks.confirmation_digits`).  They are
-candidates for the engine:
-
-* :class:`TupleDefinition` a definition with several components (``checks.Definition`` takes one);
-* :class:`Components`      ``checks.Values`` for a form with several components (a Tuple);
-* :class:`Vanishes`        a form that must vanish, its residual relative to Σ|terms| of that form;
-* :class:`Fails`           a counterexample: the formula must be off the truth by a margin;
-* :class:`OnShotBlade`     ``checks.Values`` for forms holding integrals over the blade (∫_0^λ, ∫_0^s) and
-                           v, w, v', w' at a point, which :func:`pendsym.verify.value_at` cannot evaluate.
+:class:`OnShotBlade` runs ``checks.Values`` on forms holding integrals over the blade (∫_0^λ, ∫_0^s)
+and v, w, v', w' at a point, which :func:`pendsym.verify.value_at` cannot evaluate: each becomes a
+symbol valued by quadrature on the shot blade.  It is a frozen declaration called as
+``check(result, level)`` (the engine runs such a callable as a custom check).
 """
 from __future__ import annotations
 
@@ -27,115 +20,6 @@ from pendsym.result import Evidence, Result
 from .symbols import M_of_s, epsilon_of_s, lam, s, v, w
 
 Confirm = Callable[[int], Mapping[str, object]] | None
-
-
-def terms_scale(expr: sp.Expr, env: Mapping) -> mp.mpf:
-    """Σ|terms| of the expanded expr at env: the scale of a quantity that should vanish."""
-    terms = sp.Add.make_args(sp.expand(expr))
-    return sum((abs(mp.mpf(verify.value_at(term, env))) for term in terms), mp.mpf(0))
-
-
-def _confirmed(digits: float | None) -> bool:
-    return digits is None or digits >= checks.MIN_DIGITS
-
-
-def _confirm_note(digits: float | None) -> str:
-    return "" if digits is None else f"; truth confirmed to {digits:.1f} digits at {checks.CONFIRM_DPS} digits"
-
-
-@dataclass(frozen=True)
-class TupleDefinition:
-    """A definition with several components: each equal to the text, exactly."""
-
-    def __call__(self, result: Result, level: str) -> Evidence:
-        same = result.printed is not None and len(result.printed) == len(result.derived) and all(
-            sp.simplify(p - d) == 0 for p, d in zip(result.printed_value, result.derived_value))
-        return Evidence(kind="definition", passed=bool(same), truth="a definition, compared exactly with the text")
-
-
-@dataclass(frozen=True)
-class Components:
-    """Each component of a Tuple form against a truth: ``points(level, dps)`` yields
-    (component index, Point); as checks.Values otherwise."""
-
-    truth: str
-    points: Callable[[str, int], Iterable[tuple[int, Point]]]
-    confirm: Confirm = None
-    tol: object = checks.TOL
-
-    def __call__(self, result: Result, level: str) -> Evidence:
-        forms = {"derived": result.derived_value}
-        if result.printed is not None:
-            forms["printed"] = result.printed_value
-        worst = dict.fromkeys(forms, mp.mpf(0))
-        n = 0
-        with mp.workdps(40):
-            for index, pt in self.points(level, checks.DPS):
-                n += 1
-                for name, form in forms.items():
-                    worst[name] = max(worst[name], pt.residual(verify.value_at(form[index], pt.env)))
-        digits = checks.confirmation_digits(self.confirm)
-        tol = mp.mpf(self.tol)
-        note = f"{n} (point, component) pairs" + _confirm_note(digits)
-        if "printed" in worst:
-            note += f"; printed form: max residual {float(worst['printed']):.3g}"
-        return Evidence(kind="value", passed=bool(worst["derived"] < tol and _confirmed(digits)), truth=self.truth,
-                        max_residual=verify.rounded(worst["derived"]),
-                        printed_agrees=None if "printed" not in worst else bool(worst["printed"] < tol),
-                        confirm_digits=None if digits is None else verify.rounded(digits), note=note)
-
-
-@dataclass(frozen=True)
-class Vanishes:
-    """The form vanishes at each point of ``points(level, dps)`` ((label, env)): its value relative
-    to Σ|terms| of the same form must stay below ``tol``, for the derived and the printed form."""
-
-    truth: str
-    points: Callable[[str, int], Iterable[tuple[str, Mapping]]]
-    confirm: Confirm = None
-    tol: object = checks.TOL
-
-    def __call__(self, result: Result, level: str) -> Evidence:
-        forms = {"derived": result.derived_value}
-        if result.printed is not None:
-            forms["printed"] = result.printed_value
-        worst = dict.fromkeys(forms, mp.mpf(0))
-        n = 0
-        with mp.workdps(40):
-            for _, env in self.points(level, checks.DPS):
-                n += 1
-                for name, form in forms.items():
-                    value = abs(mp.mpf(verify.value_at(form, env))) / terms_scale(form, env)
-                    worst[name] = max(worst[name], value)
-        digits = checks.confirmation_digits(self.confirm)
-        tol = mp.mpf(self.tol)
-        note = f"{n} cases, residual relative to Σ|terms|" + _confirm_note(digits)
-        if "printed" in worst:
-            note += f"; printed: {float(worst['printed']):.3g}"
-        return Evidence(kind="value", passed=bool(worst["derived"] < tol and _confirmed(digits)), truth=self.truth,
-                        max_residual=verify.rounded(worst["derived"]),
-                        printed_agrees=None if "printed" not in worst else bool(worst["printed"] < tol),
-                        confirm_digits=None if digits is None else verify.rounded(digits), note=note)
-
-
-@dataclass(frozen=True)
-class Fails:
-    """A counterexample: at every point the derived form must be off its truth by more than
-    ``margin`` (relative residual, as Point.residual)."""
-
-    truth: str
-    points: Callable[[str, int], Iterable[Point]]
-    margin: object = mp.mpf("1e-4")
-
-    def __call__(self, result: Result, level: str) -> Evidence:
-        residuals = []
-        with mp.workdps(40):
-            for pt in self.points(level, checks.DPS):
-                residuals.append((pt.label, pt.residual(verify.value_at(result.derived_value, pt.env))))
-        least = min(res for _, res in residuals)
-        note = "must fail; relative residual " + "; ".join(f"{label}: {mp.nstr(res, 3)}" for label, res in residuals)
-        return Evidence(kind="value", passed=bool(least > mp.mpf(self.margin)), truth=self.truth,
-                        max_residual=verify.rounded(least), note=note)
 
 
 def blade_integral(integral: sp.Integral, env: Mapping, shot: blade.BladeSolution, eps=None, at=None) -> mp.mpf:

@@ -5,7 +5,6 @@ import sympy as sp
 
 from pendsym import checks
 from pendsym.result import Spec
-from ..check_kinds import TupleDefinition
 from .. import profiles
 from ..common import READ_VW, rid, src, step
 from ..symbols import M1, M2, mu, vl, w0, wl
@@ -67,9 +66,9 @@ def specs() -> tuple[Spec, ...]:
              printed=printed.eq9, instances=INSTANCES, **definition),
         Spec(rid(10, "bc"), "v'_0 = v'_λ = −1, w'_0 = 0, w'_λ = 1", src(2, "10"),
              r"(v'_0, v'_\lambda, w'_0, w'_\lambda)", step(derivation.end_slopes), printed=printed.eq10,
-             definition=True, check=TupleDefinition()),
+             definition=True, check=checks.Definition()),
         Spec(rid(11, "phi12"), "φ1 = 1 + v', φ2 = w'", src(2, "11"), r"(\varphi_1, \varphi_2)",
-             step(derivation.phi1_phi2), printed=printed.eq11, definition=True, check=TupleDefinition()),
+             step(derivation.phi1_phi2), printed=printed.eq11, definition=True, check=checks.Definition()),
         Spec(rid(12, "ends"), "φ10 = φ1λ = 0, φ20 = 0, φ2λ = 1", src(2, "12"),
              r"(\varphi_{10}, \varphi_{1\lambda}, \varphi_{20}, \varphi_{2\lambda})", step(derivation.phi_end_values),
              printed=printed.eq12, check=truth.end_values_12(),

@@ -12,6 +12,7 @@ bulged) at 30 digits, the truth confirmed by a 45-digit solve of the hole blade:
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import mpmath as mp
@@ -21,7 +22,7 @@ from pendsym import checks, verify
 from pendsym.checks import Point
 from pendsym.result import Evidence, Result
 from .. import ch1_model, profiles
-from ..check_kinds import Components, Fails
+
 from ..profiles import DIRECT_TRUTH, MODES_TRUTH, SHOT_TRUTH
 from ..symbols import N, Y, beta_ddot, m, theta, theta_ddot, varphi, s
 from . import derivation
@@ -74,14 +75,15 @@ def solution_ends(statement: str) -> checks.All:
 
     def points(level, dps):
         for name in profiles.LEVEL_PROFILES[level]:
-            yield from enumerate(rows(name, None, dps))
-    ends = Components(truth=DIRECT_TRUTH + ": φ at s = 0, λ", points=points, confirm=profiles.confirmation_env)
+            for index, point in enumerate(rows(name, None, dps)):
+                yield dataclasses.replace(point, component=index)
+    ends = checks.Values(truth=DIRECT_TRUTH + ": φ at s = 0, λ", points=points, confirm=profiles.confirmation_env)
     proof = checks.Proof(statement, holds=lambda derived: sp.simplify(derived[0]) == 0
                          and sp.simplify(derived[1] - theta) == 0)
     return checks.All((ends, proof), truth=DIRECT_TRUTH + " + symbolic proof")
 
 
-def end_values_12() -> Components:
+def end_values_12() -> checks.Values:
     """(12): φ1 = 1 + v', φ2 = w' of the shot blade at 0 and λ (a check of the shooting against (10)–(11))."""
     def points(level, dps):
         for name in profiles.LEVEL_PROFILES[level]:
@@ -89,9 +91,9 @@ def end_values_12() -> Components:
             length = profiles.as_mpf(shot.blade.length)
             values = (shot.phi1(0), shot.phi1(length), shot.phi2(0), shot.phi2(length))
             for i, value in enumerate(values):
-                yield i, Point(f"{name}[{i}]", {}, value, 1)
-    return Components(truth=SHOT_TRUTH + ": φ1 = 1 + v', φ2 = w' at 0 and λ", points=points,
-                      confirm=profiles.confirmation_env)
+                yield Point(f"{name}[{i}]", {}, value, 1, component=i)
+    return checks.Values(truth=SHOT_TRUTH + ": φ1 = 1 + v', φ2 = w' at 0 and λ", points=points,
+                         confirm=profiles.confirmation_env)
 
 
 @dataclass(frozen=True)
@@ -219,5 +221,6 @@ def symmetric(key: str) -> checks.All:
     holds = checks.Values(truth=f"{SHOT_TRUTH} ({key} of the shot blade, symmetric blades: "
                                 f"{', '.join(profiles.SYMMETRIC)})", points=rows(profiles.SYMMETRIC),
                           confirm=profiles.confirmation_env)
-    fails = Fails(truth=f"{SHOT_TRUTH} ({key} of the unsymmetric tapered blade)", points=rows(profiles.UNSYMMETRIC))
+    fails = checks.Values(truth=f"{SHOT_TRUTH} ({key} of the unsymmetric tapered blade)",
+                          points=rows(profiles.UNSYMMETRIC), fails_by=mp.mpf("1e-4"))
     return checks.All((holds, fails), truth=holds.truth)

@@ -17,7 +17,6 @@ from pendsym import checks, suspension, verify
 from pendsym.checks import Point
 from pendsym.result import Evidence, Result
 from .. import profiles
-from ..check_kinds import Vanishes
 from ..profiles import DIRECT_TRUTH, MODES_TRUTH
 
 
@@ -86,7 +85,7 @@ def modes(quantity, what: str) -> checks.Values:
     return profiles.values_on_profiles(f"{MODES_TRUTH}: {what}", mode_rows(quantity), pend=True)
 
 
-def at_foci(what: str, swap: bool = False) -> Vanishes:
+def at_foci(what: str, swap: bool = False) -> checks.Values:
     """A condition on the foci, at the nodes z, z' of the two modes with the n² of the principal one; with
     ``swap``, also z ↔ z' with the n'² of the parasitic mode (y_F vanishes in the mode whose node is the other
     focus)."""
@@ -94,10 +93,11 @@ def at_foci(what: str, swap: bool = False) -> Vanishes:
         for name in profiles.LEVEL_PROFILES[level]:
             for pend in profiles.LEVEL_PENDULUMS[level]:
                 env = profiles.shot_and_mode_env(name, pend, dps)
-                yield f"{name}/{pend}", env
+                yield Point(f"{name}/{pend}", env, 0, denom="terms")
                 if swap:
-                    yield f"{name}/{pend}/swapped", dict(env, z=env["z'"], **{"z'": env["z"], "n^2": env["n'^2"]})
-    return Vanishes(truth=f"{MODES_TRUTH}: {what}", points=points, confirm=profiles.confirmation_env)
+                    swapped = dict(env, z=env["z'"], **{"z'": env["z"], "n^2": env["n'^2"]})
+                    yield Point(f"{name}/{pend}/swapped", swapped, 0, denom="terms")
+    return checks.Values(truth=f"{MODES_TRUTH}: {what}", points=points, confirm=profiles.confirmation_env)
 
 
 # ---------------------------------------------------------------- n°9: existence
