@@ -49,7 +49,8 @@ class Point:
 
     The residual is |formula − truth| / denom; denom defaults to max(|truth|, 1) (relative for
     large values, absolute for small ones); ``denom="terms"`` scales by Σ|terms| of the expanded
-    formula at env (for a quantity that must vanish: truth 0).
+    formula at env (for a quantity that must vanish: truth 0).  With ``through``, the formula's
+    value is compared through that function (when the truth measures a quantity it determines).
     """
 
     label: str
@@ -57,6 +58,7 @@ class Point:
     truth: object
     denom: object = None
     component: int | None = None
+    through: Callable[[object], object] | None = None
 
     def residual(self, value, terms=None) -> mp.mpf:
         t = mp.mpf(self.truth)
@@ -71,7 +73,8 @@ class Point:
         if self.component is not None:
             form = form[self.component]
         terms = terms_scale(form, self.env) if self.denom == "terms" else None
-        return self.residual(verify.value_at(form, self.env), terms)
+        value = verify.value_at(form, self.env)
+        return self.residual(value if self.through is None else self.through(value), terms)
 
 
 def terms_scale(expr: sp.Expr, env: Mapping) -> mp.mpf:

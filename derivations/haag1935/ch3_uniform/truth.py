@@ -301,20 +301,15 @@ THETA_OVER_Y = {"c": lambda solution, env: mp.mpf(env["theta"]),
                 "static": theta_static}
 
 
-@dataclass(frozen=True)
-class ShapePoint(checks.Point):
-    """A point where c is measured through the shape (171) it determines (c enters only there):
-    the residual is that of ωs − sh ωs + c(ch ωs − 1) against ω y of (77) with Y = 1."""
-
-    omega_s: object = 0
-
-    def residual(self, value) -> mp.mpf:
-        shape = self.omega_s - mp.sinh(self.omega_s) + mp.mpf(value) * (mp.cosh(self.omega_s) - 1)
-        return super().residual(shape)
+def shape_of_c(omega_s, c) -> mp.mpf:
+    """ωs − sh ωs + c(ch ωs − 1): the shape (171) that c determines (c enters only there)."""
+    return omega_s - mp.sinh(omega_s) + mp.mpf(c) * (mp.cosh(omega_s) - 1)
 
 
-def shape_point(label_text, env, truth) -> ShapePoint:
-    return ShapePoint(label_text, env, truth, omega_s=mp.mpf(env["u"]) / mp.mpf(env["lambda"]) * mp.mpf(env["s"]))
+def shape_point(label_text, env, truth) -> checks.Point:
+    """A point where c is measured through the shape (171), against ω y of (77) with Y = 1."""
+    omega_s = mp.mpf(env["u"]) / mp.mpf(env["lambda"]) * mp.mpf(env["s"])
+    return checks.Point(label_text, env, truth, through=functools.partial(shape_of_c, omega_s))
 
 
 def c_on_blade(which: str) -> checks.Values:
