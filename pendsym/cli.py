@@ -178,7 +178,7 @@ def cmd_scene(args) -> int:
         print(json.dumps({"scene": sc.name, "results_built": n_built,
                           "values": [{"id": i, "title": t, "value": float(v)} for i, t, v in rows]}, indent=1))
         return 0
-    print(f"{sc.name}  ({n_built} results built: the closure of {len(sc.results)})")
+    print(f"{scene.printable(sc.name)}  ({n_built} results built: the closure of {len(sc.results)})")
     for rid, title, val in rows:
         print(f"  {rid:<36} {mp.nstr(val, 8):>16}   {title}")
     return 0

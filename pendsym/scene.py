@@ -1,21 +1,28 @@
 """Scenes: one concrete pendulum configuration, computed from the Results it names.
 
 A scene file is TOML (read with the standard library's tomllib, never
-evaluated):
+evaluated), at most 1 MiB of UTF-8:
 
     name = "…"
     results = ["<memoir>.<result>", …]
-    [parameters]          # values of the Results' symbols, by name, SI units
+    [parameters]            # values of the Results' symbols, by name, SI units
     K = 1.0e-7
 
+A scene whose Results come from several memoirs gives each memoir's parameters in
+its own table, ``[parameters.<memoir key>]``: a symbol belongs to its memoir (the
+same letter means different things in different memoirs).
+
 Only the dependency closure of the named Results is built.  Bad input (an
-unreadable file, an unknown key or id, a missing or non-numeric parameter, a
-value outside the symbol's domain) raises SceneError, reported in one line.
+unreadable or oversized file, bytes that are not UTF-8, nesting too deep, an unknown
+key, id or parameter, a missing or non-numeric parameter, a value outside the
+symbol's domain or the Result's declared range, a result that is not a finite
+number) raises SceneError, reported in one line.
 """
 from __future__ import annotations
 
 import math
 import tomllib
+import unicodedata
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -23,6 +30,8 @@ import mpmath as mp
 import sympy as sp
 
 from . import registry
+
+MAX_BYTES = 1 << 20
 
 
 class SceneError(ValueError):
@@ -33,39 +42,89 @@ class SceneError(ValueError):
 class Scene:
     name: str
     results: tuple[str, ...]
-    parameters: tuple[tuple[str, float], ...]
+    parameters: tuple[tuple[str, tuple[tuple[str, float], ...]], ...]   # (memoir key or "", ((name, value), …))
+
+
+def printable(text: str) -> str:
+    """Text safe for a terminal: control and bidirectional-format characters shown as escapes."""
+    return "".join(ch if unicodedata.category(ch) not in ("Cc", "Cf") else f"\\u{ord(ch):04x}" for ch in text)
+
+
+def _read(path: Path | str) -> str:
+    try:
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise SceneError(f"cannot read scene {printable(str(path))}: {exc.strerror}") from None
+    if len(raw) > MAX_BYTES:
+        raise SceneError(f"scene {printable(str(path))} is larger than {MAX_BYTES // 1024} KiB")
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"scene {printable(str(path))} is not UTF-8 text (byte {exc.start})") from None
+
+
+def _numbers(where: str, table) -> tuple[tuple[str, float], ...]:
+    if not isinstance(table, dict):
+        raise SceneError(f"{where} must be a table of numbers")
+    for key, val in table.items():
+        if isinstance(val, bool) or not isinstance(val, (int, float)) or not math.isfinite(val):
+            raise SceneError(f"{where}: parameter {printable(key)} must be a finite number")
+    return tuple(sorted((k, float(v)) for k, v in table.items()))
 
 
 def load(path: Path | str) -> Scene:
+    text = _read(path)
+    where = f"scene {printable(str(path))}"
     try:
-        data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise SceneError(f"cannot read scene {path}: {exc.strerror}") from None
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"scene {path} is not valid TOML: {exc}") from None
+        raise SceneError(f"{where} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise SceneError(f"{where} is nested too deeply") from None
     extra = set(data) - {"name", "results", "parameters"}
     if extra:
-        raise SceneError(f"scene {path}: unknown keys {sorted(extra)}")
+        raise SceneError(f"{where}: unknown keys {[printable(k) for k in sorted(extra)]}")
     ids = data.get("results")
     if not isinstance(ids, list) or not ids or not all(isinstance(i, str) for i in ids):
-        raise SceneError(f"scene {path}: 'results' must be a non-empty list of result ids")
+        raise SceneError(f"{where}: 'results' must be a non-empty list of result ids")
+    name = data.get("name", Path(path).stem)
+    if not isinstance(name, str) or any(unicodedata.category(ch) in ("Cc", "Cf") for ch in name):
+        raise SceneError(f"{where}: 'name' must be text without control characters")
     params = data.get("parameters", {})
     if not isinstance(params, dict):
-        raise SceneError(f"scene {path}: [parameters] must be a table")
-    for key, val in params.items():
-        if isinstance(val, bool) or not isinstance(val, (int, float)) or not math.isfinite(val):
-            raise SceneError(f"scene {path}: parameter {key} must be a finite number")
-    return Scene(str(data.get("name", Path(path).stem)), tuple(ids),
-                 tuple(sorted((k, float(v)) for k, v in params.items())))
+        raise SceneError(f"{where}: [parameters] must be a table")
+    memoirs = sorted({i.split(".", 1)[0] for i in ids})
+    if len(memoirs) > 1 or any(isinstance(v, dict) for v in params.values()):
+        unknown = set(params) - set(memoirs)
+        if unknown:
+            raise SceneError(f"{where}: the Results come from {', '.join(memoirs)}: give each memoir's parameters "
+                             f"as [parameters.<memoir>] (not {', '.join(printable(k) for k in sorted(unknown))})")
+        tables = tuple((m, _numbers(f"{where}: [parameters.{m}]", params.get(m, {}))) for m in memoirs)
+    else:
+        tables = (("", _numbers(f"{where}: [parameters]", params)),)
+    return Scene(name, tuple(ids), tables)
 
 
-def _check_domain(sym: sp.Symbol, value: float) -> None:
+def _check_domain(rid: str, sym: sp.Symbol, value: float, declared: dict) -> None:
     if sym.is_positive and not value > 0:
         raise SceneError(f"parameter {sym.name} = {value:g} is outside its domain (must be > 0)")
     if sym.is_nonnegative and value < 0:
         raise SceneError(f"parameter {sym.name} = {value:g} is outside its domain (must be >= 0)")
     if sym.is_integer and value != int(value):
         raise SceneError(f"parameter {sym.name} = {value:g} is outside its domain (must be an integer)")
+    if sym.name in declared:
+        lo, hi = declared[sym.name]
+        if not lo <= value <= hi:
+            raise SceneError(f"parameter {sym.name} = {value:g} is outside the range {rid} declares "
+                             f"([{lo:g}, {hi:g}])")
+
+
+def _parameters_of(scene: Scene, memoir: str) -> dict[str, float]:
+    for key, table in scene.parameters:
+        if key in ("", memoir):
+            return dict(table)
+    return {}
 
 
 def evaluate(scene: Scene, dps: int = 30) -> tuple[list[tuple[str, str, mp.mpf]], int]:
@@ -74,19 +133,32 @@ def evaluate(scene: Scene, dps: int = 30) -> tuple[list[tuple[str, str, mp.mpf]]
         built = registry.build(scene.results)
     except registry.UnknownResult as exc:
         raise SceneError(str(exc)) from None
-    values = dict(scene.parameters)
+    used: dict[str, set[str]] = {}
     out = []
     for rid in scene.results:
-        expr = built[rid].derived
+        memoir = rid.split(".", 1)[0]
+        values = _parameters_of(scene, memoir)
+        result = built[rid]
+        declared = {a.name: (a.lo, a.hi) for a in result.spec.kernel.args} if result.spec.kernel else {}
+        expr = result.derived_value
         subs = {}
         for sym in sorted(expr.free_symbols, key=lambda s: s.name):
             if sym.name not in values:
                 raise SceneError(f"{rid} needs parameter {sym.name}, which the scene does not give")
-            _check_domain(sym, values[sym.name])
+            _check_domain(rid, sym, values[sym.name], declared)
             subs[sym] = sp.Float(repr(values[sym.name]), dps)
+            used.setdefault(memoir, set()).add(sym.name)
         with mp.workdps(dps):
             val = sp.N(expr.subs(subs), dps)
-        if not val.is_number or val.has(sp.zoo, sp.nan):
-            raise SceneError(f"{rid} has no numeric value for this scene")
-        out.append((rid, built[rid].spec.title, mp.mpf(val)))
+        if not val.is_number or val.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not val.is_real:
+            raise SceneError(f"{rid} has no finite real value for this scene")
+        value = mp.mpf(val)
+        if not mp.isfinite(value) or not math.isfinite(float(value)):
+            raise SceneError(f"{rid} = {mp.nstr(value, 5)} for this scene: not a finite double")
+        out.append((rid, result.spec.title, value))
+    for key, table in scene.parameters:
+        memoirs = [key] if key else sorted({i.split(".", 1)[0] for i in scene.results})
+        unused = {name for name, _ in table} - set().union(*(used.get(m, set()) for m in memoirs))
+        if unused:
+            raise SceneError(f"parameters not used by the scene's Results: {', '.join(printable(u) for u in sorted(unused))}")
     return out, len(built)

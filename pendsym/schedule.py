@@ -13,7 +13,6 @@ import ctypes
 import multiprocessing
 import os
 import signal
-from concurrent.futures import ProcessPoolExecutor
 from typing import Callable, Mapping, Sequence
 
 _INHERITED: dict = {}   # set once in each forked worker by _adopt; never in the parent
@@ -63,18 +62,16 @@ def per_result(results: Mapping[str, object], ids: Sequence[str], fn: Callable,
                 progress(i)
         return out
     ctx = multiprocessing.get_context("fork")
-    ex = ProcessPoolExecutor(max_workers=workers(), mp_context=ctx, initializer=_adopt,
-                             initargs=(os.getpid(), results, fn))
+    pool = ctx.Pool(workers(), initializer=_adopt, initargs=(os.getpid(), results, fn))
     try:
-        futures = {i: ex.submit(_call, i) for i in ids}
-        if progress:
-            for i, fut in futures.items():
-                fut.add_done_callback(lambda _f, i=i: progress(i))
-        out = [futures[i].result() for i in ids]
+        pending = [pool.apply_async(_call, (i,), callback=(lambda _v, i=i: progress(i)) if progress else None)
+                   for i in ids]
+        out = [p.get() for p in pending]
     except BaseException:
-        ex.shutdown(wait=False, cancel_futures=True)   # the workers die with this process
+        pool.terminate()        # Ctrl-C or a failed job: no worker outlives this call
         raise
-    ex.shutdown()
+    pool.close()
+    pool.join()
     return out
 
 

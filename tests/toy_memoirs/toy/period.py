@@ -1,6 +1,9 @@
 """The toy memoir's one section: T0 = 2π/k, then T = T0(1 + α²/16) to second order in α."""
 from __future__ import annotations
 
+import os
+import time
+
 import mpmath as mp
 import sympy as sp
 
@@ -32,7 +35,9 @@ def period2(deps) -> sp.Expr:
 
 # ----------------------------------------------------------------- truth
 def swing_period(al, dps: int) -> mp.mpf:
-    """Twice the time from rest at −α to the next turning point of θ'' + k² sin θ = 0 (odefun)."""
+    """Twice the time from rest at −α to the next turning point of θ'' + k² sin θ = 0 (odefun).
+    (TOY_SLOW_SECONDS makes it slow, for the tests that interrupt a derive.)"""
+    time.sleep(float(os.environ.get("TOY_SLOW_SECONDS", "0")))
     kv = mp.mpf(K_CHECK)
     traj = truth.integrate(lambda _t, y: [y[1], -kv**2 * mp.sin(y[0])], [-mp.mpf(al), 0], dps=dps)
     return 2 * truth.turning_time(traj, mp.pi / kv, width=mp.mpf("0.3"))
