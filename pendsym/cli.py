@@ -103,6 +103,26 @@ def _progress():
     return plain, lambda: None
 
 
+def _forms(result, status: str) -> list[str]:
+    """The printed form, the derived one in the printed form's shape where SymPy finds it equal (a
+    match), and for a discrepancy the term by which they differ."""
+    if result.printed is None:
+        return [f"  derived: {sp.sstr(result.derived)}"]
+    lines = [f"  printed: {sp.sstr(result.printed)}"]
+    if status == "match":
+        lines.append("  derived: the same (see the comparison above)")
+        lines.append(f"           as SymPy writes it: {sp.sstr(result.derived)}")
+        return lines
+    lines.append(f"  derived: {sp.sstr(result.derived)}")
+    try:
+        if not isinstance(result.derived, sp.Tuple):
+            diff = sp.factor(sp.simplify(result.derived_value - result.printed_value))
+            lines.append(f"  derived − printed: {sp.sstr(diff)}")
+    except (TypeError, ValueError, NotImplementedError):
+        pass
+    return lines
+
+
 def _project_generated() -> Path:
     """generated/ of the project this pendsym belongs to (the current directory's otherwise)."""
     root = Path(__file__).resolve().parents[1]
@@ -118,9 +138,8 @@ def cmd_derive(args) -> int:
         built = registry.build(args.ids)
         for rec in pipeline.assess(built.values(), run_checks=False):
             print(f"{rec.result.id}: {rec.status}")
-            print(f"  derived: {sp.sstr(rec.result.derived)}")
-            if rec.result.printed is not None:
-                print(f"  printed: {sp.sstr(rec.result.printed)}")
+            for line in _forms(rec.result, rec.status):
+                print(line)
         return 0
     tick, done = _progress()
     try:
@@ -149,9 +168,8 @@ def cmd_check(args) -> int:
         ev = checks.chained(spec.check, evs)
     print(f"{r.id} ({r.spec.source.ref()}): {r.spec.title}")
     print(f"  status: {status} ({how})")
-    if r.printed is not None:
-        print(f"  printed: {sp.sstr(r.printed)}")
-    print(f"  derived: {sp.sstr(r.derived)}")
+    for line in _forms(r, status):
+        print(line)
     if ev is None:
         print("  no independent check")
         return 0
