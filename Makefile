@@ -22,11 +22,12 @@ lock:
 derive: $(STAMP)
 	$(BIN)/pendsym derive --out generated
 
+# over the cores, a test file per worker (so that a module's fixtures are built once)
 test: $(STAMP)
-	$(BIN)/pytest -q
+	$(BIN)/pytest -q -n auto --dist loadfile
 
 test-quick: $(STAMP)
-	$(BIN)/pytest -q -m "not slow"
+	$(BIN)/pytest -q -n auto --dist loadfile -m "not slow"
 
 tex-tools:
 	@command -v latexmk >/dev/null 2>&1 && kpsewhich pgfplots.sty >/dev/null 2>&1 && kpsewhich adjustbox.sty >/dev/null 2>&1 || \
