@@ -52,3 +52,60 @@ def test_check_prints_the_evidence():
     p = run("check", "charbonnier1908.n32.dT", "--level", "quick")
     assert p.returncode == 0, p.stderr
     assert "fitted order in a:" in p.stdout and "passed" in p.stdout
+
+
+def toy_env(tmp_path, root, **extra):
+    import os
+    return dict(os.environ, PENDSYM_MEMOIR_PACKAGES="toy_memoirs", PYTHONPATH=str(root / "tests"),
+                PENDSYM_CACHE=str(tmp_path / "cache"), **extra)
+
+
+def test_a_failed_check_fails_derive_with_a_summary(tmp_path, root):
+    p = subprocess.run([sys.executable, "-m", "pendsym.cli", "derive", "--out", str(tmp_path / "out"), "--level",
+                        "quick"], capture_output=True, text=True, env=toy_env(tmp_path, root, TOY_WRONG_ORDER="1"))
+    assert p.returncode == 1, p.stderr
+    assert "1 failed" in p.stdout and "FAILED toy.T" in p.stdout
+    again = subprocess.run([sys.executable, "-m", "pendsym.cli", "derive", "--out", str(tmp_path / "out"), "--level",
+                            "quick"], capture_output=True, text=True, env=toy_env(tmp_path, root, TOY_WRONG_ORDER="1"))
+    assert again.returncode == 1 and "nothing changed" not in again.stdout   # a failure is never "nothing changed"
+
+
+@pytest.mark.parametrize("args, message", [
+    (("derive", "charbonnier1908.n21.dT", "--out", "x"), "apply to a full derive"),
+    (("derive", "--out", "/proc/pendsym"), "cannot write"),
+    (("check", "haag1935.eq43"), "nearest: haag1935.eq043"),
+])
+def test_more_bad_input_is_one_line(args, message):
+    p = run(*args)
+    assert p.returncode == 2 and p.stdout == ""
+    lines = p.stderr.strip().splitlines()
+    assert len(lines) == 1 and message in lines[0], p.stderr
+
+
+def test_derive_into_a_file_is_refused_before_any_work(tmp_path):
+    f = tmp_path / "file"
+    f.write_text("x")
+    p = run("derive", "--out", str(f))
+    assert p.returncode == 2 and "not a directory" in p.stderr
+
+
+def test_a_corrupt_results_json_is_one_line(tmp_path):
+    (tmp_path / "results.json").write_text('{"results": [{"no id": 1}]}')
+    p = run("list", "--generated", str(tmp_path))
+    assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1 and "results.json" in p.stderr
+
+
+def test_no_arguments_prints_the_usage():
+    p = run()
+    assert p.returncode == 0 and "usage: pendsym" in p.stdout and "list" in p.stdout and "derive" in p.stdout
+
+
+def test_a_closed_pipe_is_quiet():
+    p = subprocess.run(f"{sys.executable} -m pendsym.cli list | head -1", shell=True, capture_output=True, text=True)
+    assert p.returncode == 0 and "Traceback" not in p.stderr and "BrokenPipe" not in p.stderr
+
+
+def test_list_works_from_another_directory(tmp_path):
+    p = subprocess.run([sys.executable, "-m", "pendsym.cli", "list", "--memoir", "cellerier"], cwd=tmp_path,
+                       capture_output=True, text=True)
+    assert p.returncode == 0 and "not derived" not in p.stdout

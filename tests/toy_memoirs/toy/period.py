@@ -27,9 +27,12 @@ def period0(_deps) -> sp.Expr:
 
 
 def period2(deps) -> sp.Expr:
-    """T = T0 · (2/π)K(sin²(α/2)) to second order in α."""
+    """T = T0 · (2/π)K(sin²(α/2)) to second order in α.  (TOY_WRONG_ORDER keeps a wrong α² coefficient,
+    for the tests of a failing derive.)"""
     m = sp.sin(alpha / 2) ** 2
     series = sp.series(sp.elliptic_k(m) * 2 / sp.pi, alpha, 0, 3).removeO()
+    if os.environ.get("TOY_WRONG_ORDER"):
+        series += alpha**2 / 100
     return sp.expand(deps["toy.T0"].derived * series)
 
 
