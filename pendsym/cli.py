@@ -136,7 +136,7 @@ def cmd_derive(args) -> int:
     args.level = args.level or "full"
     if args.ids:
         built = registry.build(args.ids)
-        for rec in pipeline.assess(built.values(), run_checks=False):
+        for rec in stages.assess(built.values(), run_checks=False):
             print(f"{rec.result.id}: {rec.status}")
             for line in _forms(rec.result, rec.status):
                 print(line)

@@ -1,16 +1,15 @@
 """The spine: build → compare → verify → emit.  Each stage is a plain function."""
 from __future__ import annotations
 
-import functools
 import json
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Iterable, Sequence
+from typing import Sequence
 
 import mpmath as mp
 import sympy as sp
 
-from . import checks, schedule, verify
+from . import checks, verify
 from .result import Evidence, Result
 
 
@@ -48,20 +47,6 @@ def check(result: Result, level: str = "full") -> Evidence | None:
 def assessed(r: Result, level: str = "full") -> tuple[tuple[str, str], Evidence | None]:
     """(comparison, evidence) of one Result: stages 2 and 3."""
     return compare(r), check(r, level)
-
-
-def _compare_only(r: Result):
-    return compare(r), None
-
-
-def assess(results: Iterable[Result], level: str = "full", run_checks: bool = True) -> list[Record]:
-    """Compare every Result and run its check, in parallel over the cores; then fill the chains."""
-    results = list(results)
-    by_id = {r.id: r for r in results}
-    fn = functools.partial(assessed, level=level) if run_checks else _compare_only
-    done = schedule.per_result(by_id, [r.id for r in results], fn)
-    records = [Record(r, status, how, ev) for r, ((status, how), ev) in zip(results, done)]
-    return fill_chains(records) if run_checks else records
 
 
 def fill_chains(records: Sequence[Record]) -> list[Record]:

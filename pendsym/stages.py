@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import os
 import shutil
 import tempfile
 import time
@@ -20,7 +19,7 @@ from typing import Callable, Mapping
 
 import sympy as sp
 
-from . import cache, checks, keys, pipeline, registry, schedule
+from . import cache, keys, pipeline, registry, schedule
 from .emit import files, kernels as kn, latex
 from .io import content_hash, write_atomic
 from .result import Result, Spec
@@ -183,6 +182,21 @@ def compare_and_check(pl: Plan, built: Mapping[str, Result], log: Log,
         slow = sorted(took.items(), key=lambda kv: -kv[1])[:5]
         log(f"  {sum(took.values()):.0f} s of checks; slowest: " + ", ".join(f"{i} {t:.0f} s" for i, t in slow))
     return pipeline.fill_chains(records)
+
+
+def assess(results, level: str = "full", run_checks: bool = True) -> list[pipeline.Record]:
+    """Compare each Result (and run its check, uncached) over the cores; then fill the chains.
+    For a few Results (``pendsym derive ID``, the tests); a derive goes through compare_and_check."""
+    results = list(results)
+    by_id = {r.id: r for r in results}
+    fn = functools.partial(pipeline.assessed, level=level) if run_checks else _compared
+    done = schedule.per_result(by_id, [r.id for r in results], fn)
+    records = [pipeline.Record(r, status, how, ev) for r, ((status, how), ev) in zip(results, done)]
+    return pipeline.fill_chains(records) if run_checks else records
+
+
+def _compared(result: Result):
+    return pipeline.compare(result), None
 
 
 def _sections(pl: Plan, ids: list[str]) -> str:
