@@ -44,6 +44,7 @@ from typing import Any
 import mpmath as mp
 import sympy as sp
 from mpmath.libmp import MPZ, finf, fnan, fninf, fzero
+from sympy.codegen import cfunctions
 from sympy.core.assumptions import _assume_defined
 from sympy.core.function import AppliedUndef, UndefinedFunction
 from sympy.core.singleton import Singleton
@@ -89,10 +90,13 @@ def decode(data: Any) -> Any:
 # ----------------------------------------------------------------- classes
 @lru_cache(maxsize=None)
 def sympy_classes() -> dict[str, type]:
-    """The whitelist: SymPy classes by name, from the ``sympy`` namespace (plus ExprCondPair,
-    the pieces of a Piecewise)."""
-    out = {name: obj for name, obj in vars(sp).items()
-           if isinstance(obj, type) and issubclass(obj, sp.Basic) and obj.__name__ == name}
+    """The whitelist: SymPy classes by name, from the ``sympy`` namespace and from
+    ``sympy.codegen.cfunctions`` (expm1, log1p…: the stable forms of the kernels), plus
+    ExprCondPair (the pieces of a Piecewise)."""
+    out = {}
+    for namespace in (cfunctions, sp):
+        out.update({name: obj for name, obj in vars(namespace).items()
+                    if isinstance(obj, type) and issubclass(obj, sp.Basic) and obj.__name__ == name})
     out["ExprCondPair"] = ExprCondPair
     return out
 

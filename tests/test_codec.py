@@ -330,3 +330,10 @@ def _mutate(data, rng, junk):
             node[k] = rng.choice(junk)
             return
         node = child
+
+
+def test_the_kernels_stable_functions_round_trip():
+    from sympy.codegen.cfunctions import expm1, log1p
+    x = sp.Symbol("x", positive=True)
+    for e in (expm1(x) / x, log1p(x**2) - expm1(-x)):
+        assert same(through_json(e), e)
