@@ -46,13 +46,15 @@ def _parser(with_keys: bool = True) -> Parser:
     dv.add_argument("ids", nargs="*", help="only these Results and their dependencies (printed, nothing written)")
     dv.add_argument("--out", default=None, help="output directory of a full derive (default: generated)")
     dv.add_argument("--level", choices=("quick", "full"), default=None, help="check level of a full derive")
+    dv.add_argument("--json", action="store_true", help="with ids: their records as in generated/results.json")
     sc = sub.add_parser("scene", help="compute one concrete configuration from a scene file (TOML)")
     sc.add_argument("file")
-    sc.add_argument("--json", action="store_true")
+    sc.add_argument("--json", action="store_true", help="JSON output")
     ck = sub.add_parser("check", help="run one Result's independent verification and print the evidence",
                         epilog="exit codes: 0 the check passed (or there is none), 1 it failed, 2 bad input")
     ck.add_argument("id")
     ck.add_argument("--level", choices=("quick", "full"), default="full")
+    ck.add_argument("--json", action="store_true", help="the record as in generated/results.json")
     return p
 
 
@@ -74,6 +76,7 @@ def cmd_list(args) -> int:
     for sid, spec in specs.items():
         rec = known.get(sid, {})
         rows.append({"id": sid, "memoir": spec.memoir, "ref": spec.source.ref(), "title": spec.title,
+                     "definition": spec.definition,
                      "status": rec.get("status", "not derived"), "verified": rec.get("verified", False)})
     if args.json:
         print(json.dumps(rows, indent=1, ensure_ascii=False))
@@ -130,13 +133,19 @@ def _project_generated() -> Path:
 
 
 def cmd_derive(args) -> int:
+    if args.json and not args.ids:
+        raise UsageError("--json goes with ids (a full derive writes generated/results.json)")
     if args.ids and (args.out is not None or args.level is not None):
         raise UsageError("--out and --level apply to a full derive (no ids); derive ID only prints the forms")
     args.out = args.out or "generated"
     args.level = args.level or "full"
     if args.ids:
         built = registry.build(args.ids)
-        for rec in stages.assess(built.values(), run_checks=False):
+        records = stages.assess(built.values(), run_checks=False)
+        if args.json:
+            print(json.dumps([pipeline.record_json(rec) for rec in records], indent=1, ensure_ascii=False))
+            return 0
+        for rec in records:
             print(f"{rec.result.id}: {rec.status}")
             for line in _forms(rec.result, rec.status):
                 print(line)
@@ -166,6 +175,9 @@ def cmd_check(args) -> int:
     if downstream:
         evs = {d: pipeline.check(built[d], args.level) for d in downstream}
         ev = checks.chained(spec.check, evs)
+    if args.json:
+        print(json.dumps(pipeline.record_json(pipeline.Record(r, status, how, ev)), indent=1, ensure_ascii=False))
+        return 0 if ev is None or ev.passed else 1
     print(f"{r.id} ({r.spec.source.ref()}): {r.spec.title}")
     print(f"  status: {status} ({how})")
     for line in _forms(r, status):

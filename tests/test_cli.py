@@ -109,3 +109,16 @@ def test_list_works_from_another_directory(tmp_path):
     p = subprocess.run([sys.executable, "-m", "pendsym.cli", "list", "--memoir", "cellerier"], cwd=tmp_path,
                        capture_output=True, text=True)
     assert p.returncode == 0 and "not derived" not in p.stdout
+
+
+def test_json_output_uses_the_keys_of_results_json():
+    derived = run("derive", "cellerier.rho_cn", "--json")
+    assert derived.returncode == 0, derived.stderr
+    records = json.loads(derived.stdout)
+    assert {"id", "status", "printed", "derived", "readings"} <= set(records[0])
+    checked = run("check", "cellerier.rho_cn", "--json", "--level", "quick")
+    assert checked.returncode == 0, checked.stderr
+    record = json.loads(checked.stdout)
+    assert record["id"] == "cellerier.rho_cn" and record["definition"] and not record["verified"]
+    listed = json.loads(run("list", "--memoir", "cellerier", "--json").stdout)
+    assert set(listed[0]) <= set(record)
