@@ -22,7 +22,7 @@ from typing import Iterable, Mapping
 
 SPINE = ("pendsym.result", "pendsym.registry", "pendsym.memoir", "pendsym.verify", "pendsym.checks",
          "pendsym.pipeline")
-EMITTER = "pendsym.emit"
+EMITTER = "pendsym.emit"   # the kernels of a Result also depend on these emitters
 FORMAT = "1"   # bump when the meaning of a cached value changes
 
 
@@ -124,11 +124,13 @@ def result_keys(sections: Mapping[str, str], deps: Mapping[str, tuple[str, ...]]
 
 
 def emitter_hash() -> str:
-    """The emitters' source (kernel forms, printers, templates)."""
+    """The kernel emitters' source: forms, printers, file layout and the kernels' templates (not the
+    report's, which shape no kernel)."""
     root = module_file(EMITTER).parent
     templates = module_file("pendsym").parent / "templates"
-    files = sorted([*root.rglob("*.py"), *templates.glob("*.j2")])
-    return digest(f"{f.name}:{file_hash(f)}" for f in files)
+    files = sorted([*(root / "kernels").rglob("*.py"), root / "files.py", root / "layout.py",
+                    *(t for t in templates.glob("*.j2") if not t.name.startswith("report"))])
+    return digest(f"{f.relative_to(root.parent)}:{file_hash(f)}" for f in files if f.exists())
 
 
 def tree_key(packages: Iterable[str], *extra: str) -> str:
