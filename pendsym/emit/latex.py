@@ -103,8 +103,8 @@ def _item(rec) -> dict:
     r = rec.result
     spec = r.spec
     names = abbreviation_names()
-    derived, derived_where = display(spec.lhs, r.derived, FORMULA_EM, names)
-    printed, printed_where = display(spec.lhs, r.printed, FORMULA_EM, names) if r.printed is not None else ([], [])
+    derived, derived_where = _formula(spec.lhs, r.derived, names)
+    printed, printed_where = _formula(spec.lhs, r.printed, names) if r.printed is not None else ([], [])
     return {
         "id": r.id, "id_tex": tex_code(r.id), "title": tex_text(spec.title), "ref": tex_text(spec.source.ref()),
         "para": spec.source.para, "lhs": spec.lhs,
@@ -115,6 +115,23 @@ def _item(rec) -> dict:
         "note": tex_text(spec.note),
         "ev": _evidence(rec),
     }
+
+
+_CLAIM = re.compile(r"^(?P<left>[^:]+?)\s*(?P<rel>>|<|\\geq?|\\leq?)\s*0$")
+
+
+def _formula(lhs: str, expr, names) -> tuple[list[str], list[str]]:
+    """The lines of ``lhs = expr``; for a claim of sign (lhs "X > 0", expr the quantity X),
+    ``X = expr > 0``, which reads as the claim."""
+    m = _CLAIM.match(lhs)
+    if not m or isinstance(expr, sp.Tuple):
+        return display(lhs, expr, FORMULA_EM, names)
+    left, rel = m.group("left"), m.group("rel")
+    if re.sub(r"[{} ]", "", tex_expr(expr)) == re.sub(r"[{} ]", "", left):
+        return [f"{left} {rel} 0"], []                   # the quantity is its own symbol: v_0 > 0
+    lines, where = display(left, expr, FORMULA_EM - 2, names)
+    lines[-1] += f" {rel} 0"
+    return lines, where
 
 
 def _counts(records: Sequence) -> dict:
