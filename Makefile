@@ -29,7 +29,7 @@ test-quick: $(STAMP)
 	$(BIN)/pytest -q -m "not slow"
 
 tex-tools:
-	@command -v latexmk >/dev/null 2>&1 && kpsewhich pgfplots.sty adjustbox.sty enumitem.sty xltabular.sty >/dev/null 2>&1 || \
+	@command -v latexmk >/dev/null 2>&1 && kpsewhich pgfplots.sty adjustbox.sty enumitem.sty xltabular.sty needspace.sty >/dev/null 2>&1 || \
 	  { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
 	    texlive-latex-recommended texlive-latex-extra texlive-pictures latexmk lmodern >/dev/null; }
 
