@@ -151,7 +151,7 @@ def _counts(records: Sequence) -> dict:
 
 def _kernels(kernels: Sequence[Kernel]) -> list[dict]:
     def acc(a, field):
-        return num(getattr(a, field)) if a else "--"
+        return num_tex(getattr(a, field)) if a else "--"
     return [{"name": tex_code(k.name), "rule": tex_text(k.rule), "id": k.result_id,
              "pys": acc(k.py_accuracy, "max_scaled"), "py": acc(k.py_accuracy, "max_ulp"),
              "cs": acc(k.c_accuracy, "max_scaled"), "c": acc(k.c_accuracy, "max_ulp")} for k in kernels]
@@ -184,9 +184,9 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
               "stable": num_tex(max(a.max_scaled for a in (k.py_accuracy, k.c_accuracy) if a)),
               "fails": _short(k.naive.fails)} for k in kernels if k.naive and k.py_accuracy]
     held = [{"name": tex_code(k.name), "rule": tex_text(k.rule), "id": k.result_id,
-             "pys": num(k.py_accuracy.max_scaled) if k.py_accuracy else "--",
-             "cs": num(k.c_accuracy.max_scaled) if k.c_accuracy else "--",
-             "naive": num(k.naive.accuracy.max_scaled) if k.naive else "--"} for k in withheld]
+             "pys": num_tex(k.py_accuracy.max_scaled) if k.py_accuracy else "--",
+             "cs": num_tex(k.c_accuracy.max_scaled) if k.c_accuracy else "--",
+             "naive": num_tex(k.naive.accuracy.max_scaled) if k.naive else "--"} for k in withheld]
     return render("report.tex.j2", memoir=memoir, title=tex_text(title), groups=groups, discrepancies=disc,
                   disc_kinds=sorted({d["what"] for d in disc}), definitions=definitions,
                   kernels=_kernels(kernels), naive=naive, withheld=held, bench=bench,
