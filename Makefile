@@ -30,14 +30,17 @@ test-quick: $(STAMP)
 	$(BIN)/pytest -q -n auto --dist loadfile -m "not slow"
 
 tex-tools:
-	@command -v latexmk >/dev/null 2>&1 && kpsewhich pgfplots.sty >/dev/null 2>&1 && kpsewhich adjustbox.sty >/dev/null 2>&1 || \
+	@command -v latexmk >/dev/null 2>&1 && kpsewhich pgfplots.sty adjustbox.sty enumitem.sty xltabular.sty needspace.sty >/dev/null 2>&1 || \
 	  { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
 	    texlive-latex-recommended texlive-latex-extra texlive-pictures latexmk lmodern >/dev/null; }
 
 report: $(STAMP) tex-tools
 	mkdir -p build/report
 	cd generated/tex && for f in *.tex; do \
-	  latexmk -pdf -interaction=nonstopmode -halt-on-error -silent -outdir=../../build/report $$f || exit 1; done
+	  log=../../build/report/$${f%.tex}.log; \
+	  max_print_line=10000 latexmk -pdf -interaction=nonstopmode -halt-on-error -silent -outdir=../../build/report $$f \
+	    || { ../../$(BIN)/python -m pendsym.emit.texlog $$log; exit 1; }; \
+	  ../../$(BIN)/python -m pendsym.emit.texlog $$log || exit 1; done
 	@ls -1 build/report/*.pdf
 
 bench: $(STAMP) bench-derive
