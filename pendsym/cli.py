@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import sys
 import time
@@ -96,11 +97,11 @@ def _progress():
             bar.total = total
             bar.update(done - bar.n)
         return tick, bar.close
-    last = [time.monotonic()]
+    last = [-math.inf]
 
     def plain(done: int, total: int) -> None:
         now = time.monotonic()
-        if now - last[0] >= 30:
+        if now - last[0] >= 30 or done == total:       # the first one at once, then every 30 s, and the last
             print(f"checking: {done}/{total} results done, {total - done} to go", file=sys.stderr, flush=True)
             last[0] = now
     return plain, lambda: None

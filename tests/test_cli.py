@@ -122,3 +122,12 @@ def test_json_output_uses_the_keys_of_results_json():
     assert record["id"] == "cellerier.rho_cn" and record["definition"] and not record["verified"]
     listed = json.loads(run("list", "--memoir", "cellerier", "--json").stdout)
     assert set(listed[0]) <= set(record)
+
+
+def test_derive_says_how_far_it_is(tmp_path, root):
+    p = subprocess.run([sys.executable, "-m", "pendsym.cli", "derive", "--out", str(tmp_path / "out"), "--level",
+                        "quick"], capture_output=True, text=True, env=toy_env(tmp_path, root))
+    assert p.returncode == 0, p.stderr
+    progress = [line for line in p.stderr.splitlines() if line.startswith("checking: ")]
+    assert progress and progress[-1] == "checking: 2/2 results done, 0 to go"
+    assert "2 results: 2 verified, 0 failed" in p.stdout
