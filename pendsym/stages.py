@@ -43,8 +43,7 @@ class Plan:
     emitter: str
 
     def key(self, kind: str, rid: str) -> str:
-        return keys.digest((kind, self.level if kind == "assessed" else "", self.keys[rid],
-                          self.emitter if kind in ("kernel", "c") else ""))
+        return keys.digest((kind, self.level if kind == "assessed" else "", self.keys[rid]))
 
 
 # ----------------------------------------------------------------- plan
@@ -217,6 +216,15 @@ def kernel_ids(pl: Plan, built: Mapping[str, Result]) -> list[str]:
             and kn.closed_form(built[i].derived)]
 
 
+def kernel_key(result: Result, emitter: str) -> str:
+    """A kernel depends on the Result's forms and declarations only (not on the code that derived or
+    checks them): its key is their content, with the kernel emitters' source."""
+    spec = result.spec
+    return keys.digest(("kernel", keys.FORMAT, *keys.versions(), result.id, sp.srepr(result.derived),
+                        sp.srepr(result.printed), repr(spec.kernel), sp.srepr(sp.Tuple(*(sp.Tuple(*d) for d in spec.defs))),
+                        spec.title, spec.source.ref(), emitter))
+
+
 def _kernel_job(result: Result, key: str):
     return cache.memo(key, functools.partial(kn.kernel_of, result))
 
@@ -225,15 +233,20 @@ def form_kernels(pl: Plan, built: Mapping[str, Result], log: Log) -> dict[str, l
     """Each memoir's kernels: stable forms chosen and measured in Python (cached per Result)."""
     start = time.monotonic()
     ids = kernel_ids(pl, built)
-    fresh = sum(1 for i in ids if cache.load(pl.key("kernel", i)) is cache.MISSING)
+    key_of = {i: kernel_key(built[i], pl.emitter) for i in ids}
+    fresh = sum(1 for i in ids if cache.load(key_of[i]) is cache.MISSING)
     jobs = {i: built[i] for i in ids}
-    outs = schedule.per_result(jobs, ids, lambda r: _kernel_job(r, pl.key("kernel", r.id)))
+    outs = schedule.per_result(jobs, ids, lambda r: _kernel_job(r, key_of[r.id]))
     formed = {m: [] for m in pl.memoirs}
     for i, k in zip(ids, outs):
         if k is not None:
             formed[pl.specs[i].memoir].append(k)
     log(f"formed {len(ids)} kernels ({fresh} anew) in {time.monotonic() - start:.0f} s")
     return formed
+
+
+def _c_key(result: Result, pl: Plan) -> str:
+    return keys.digest(("c", kernel_key(result, pl.emitter)))
 
 
 def _c_job(job):
@@ -251,7 +264,7 @@ def measure_c(pl: Plan, built: Mapping[str, Result], formed: dict[str, list], lo
     with tempfile.TemporaryDirectory() as tmp:
         jobs = {}
         for memoir, ks in formed.items():
-            missing = [k for k in ks if cache.load(pl.key("c", k.result_id)) is cache.MISSING]
+            missing = [k for k in ks if cache.load(_c_key(built[k.result_id], pl)) is cache.MISSING]
             if missing:
                 d = Path(tmp) / memoir
                 d.mkdir()
@@ -259,10 +272,10 @@ def measure_c(pl: Plan, built: Mapping[str, Result], formed: dict[str, list], lo
                 jobs.update({k.result_id: (lib, k, built[k.result_id]) for k in missing})
         measured = dict(zip(jobs, schedule.per_result(jobs, list(jobs), _c_job)))
         for rid, acc in measured.items():
-            cache.store(pl.key("c", rid), acc)
+            cache.store(_c_key(built[rid], pl), acc)
     for memoir, ks in formed.items():
         out[memoir] = [dataclasses.replace(k, c_accuracy=measured[k.result_id] if k.result_id in measured
-                                           else cache.load(pl.key("c", k.result_id))) for k in ks]
+                                           else cache.load(_c_key(built[k.result_id], pl))) for k in ks]
     log(f"measured {len(jobs)} C kernels anew in {time.monotonic() - start:.0f} s")
     return out
 
