@@ -1,10 +1,8 @@
-"""A disk cache for pure computations (independent checks, kernel forms).
+"""A disk cache for pure computations (built forms, evidence, kernel forms).
 
-An entry is keyed by the content hash of everything that determines it: the
-Result's id and expressions, the level, the versions of SymPy and mpmath, and
-the source text of the engine and of the memoir's derivations.  Any change
-of code therefore misses the cache; a hit returns exactly what the
-computation would return.
+An entry is stored under a content key that covers everything that determines
+it (:mod:`pendsym.keys` makes the keys): any change of what it depends on
+misses the cache; a hit returns exactly what the computation would return.
 
 Entries are data, never code: ``<dir>/<key[:2]>/<key>.json`` holds
 ``{"format": 1, "key": key, "checksum": sha256 of the canonical JSON of the
@@ -22,18 +20,14 @@ or ``~/.cache/pendsym``.  It never depends on the working directory.
 from __future__ import annotations
 
 import hashlib
-import importlib
 import json
 import os
 import re
 import secrets
 import stat
-from functools import lru_cache
 from pathlib import Path
 from typing import Any, Callable, TypeVar
 
-import mpmath
-import sympy
 
 from . import codec
 
@@ -53,9 +47,6 @@ class _Missing:
 
 
 MISSING: Any = _Missing()   # what load() returns when there is no valid entry
-
-# Parts of the engine that cannot change a check's evidence (they only emit files).
-EMITTERS = ("emit", "templates", "cli.py", "bench.py", "derive.py")
 
 
 # ----------------------------------------------------------------- where
@@ -89,38 +80,6 @@ def entry_path(d: Path, k: str) -> Path:
     return d / k[:2] / f"{k}.json"
 
 
-# ----------------------------------------------------------------- keys
-@lru_cache(maxsize=None)
-def code_hash(package: str, exclude: tuple[str, ...] = ()) -> str:
-    """sha256 of the source files of a package (sorted by path), less the excluded parts."""
-    mod = importlib.import_module(package)
-    root = Path(next(iter(mod.__path__)))
-    h = hashlib.sha256()
-    for f in sorted(root.rglob("*")):
-        rel = f.relative_to(root).parts
-        if rel and rel[0] in exclude:
-            continue
-        if f.suffix in (".py", ".j2") and "__pycache__" not in f.parts:
-            h.update(str(f.relative_to(root)).encode())
-            h.update(f.read_bytes())
-    return h.hexdigest()
-
-
-def file_hash(path: str | os.PathLike) -> str:
-    """sha256 of a file's bytes."""
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
-
-
-def key(*parts: str, packages: tuple[str, ...] = ("pendsym",), exclude: tuple[str, ...] = ()) -> str:
-    """The key of a computation: its parts, the code of the packages, SymPy's and mpmath's versions."""
-    h = hashlib.sha256()
-    for p in (sympy.__version__, mpmath.__version__, *(code_hash(pk, exclude) for pk in packages), *parts):
-        h.update(p.encode())
-        h.update(b"\0")
-    return h.hexdigest()
-
-
-# ----------------------------------------------------------------- entries
 def canonical(data: Any) -> bytes:
     """The canonical JSON of codec data (sorted keys, no spaces, ASCII, no NaN)."""
     return json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=True,

@@ -19,7 +19,7 @@ class Section:
     """One section of a memoir: the module (or package) that builds its Specs.
 
     The section's source, and the engine and memoir modules it imports, are
-    what its Results' cache keys cover (see :mod:`pendsym.incremental`).
+    what its Results' cache keys cover (see :mod:`pendsym.keys`).
     """
 
     module: str                  # dotted name of the module whose ``specs()`` gives the Specs

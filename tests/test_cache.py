@@ -10,8 +10,13 @@ import stat
 import pytest
 import sympy as sp
 
-from pendsym import cache, codec
+from pendsym import cache, codec, keys
 from pendsym.result import Evidence
+
+
+def key(*parts: str) -> str:
+    """A cache key as the pipeline makes them (pendsym.keys.digest)."""
+    return keys.digest(parts)
 
 
 @pytest.fixture
@@ -54,17 +59,17 @@ def test_memo_computes_once_per_key(cdir):
     def compute():
         calls.append(1)
         return {"v": len(calls)}
-    k = cache.key("test", "a")
+    k = key("test", "a")
     assert cache.memo(k, compute) == {"v": 1}
     assert cache.memo(k, compute) == {"v": 1}
     assert len(calls) == 1
-    assert cache.memo(cache.key("test", "b"), compute) == {"v": 2}
+    assert cache.memo(key("test", "b"), compute) == {"v": 2}
 
 
 def test_entries_are_checked_json(cdir):
     count = Counter()
     for i, value in enumerate(VALUES):
-        k = cache.key("values", str(i))
+        k = key("values", str(i))
         assert cache.memo(k, count(value)) == value
         back = cache.memo(k, count("recomputed"))
         assert back == value and type(back) is type(value)
@@ -81,24 +86,13 @@ def test_cache_off(monkeypatch, tmp_path):
     monkeypatch.setenv("PENDSYM_CACHE", "off")
     monkeypatch.chdir(tmp_path)
     n = []
-    cache.memo(cache.key("x"), lambda: n.append(1))
-    cache.memo(cache.key("x"), lambda: n.append(1))
+    cache.memo(key("x"), lambda: n.append(1))
+    cache.memo(key("x"), lambda: n.append(1))
     assert len(n) == 2
     assert cache.directory() is None
-    assert cache.store(cache.key("x"), 1) is False and cache.load(cache.key("x")) is cache.MISSING
+    assert cache.store(key("x"), 1) is False and cache.load(key("x")) is cache.MISSING
     assert cache.clear() == 0
     assert not any(tmp_path.iterdir())
-
-
-def test_key_depends_on_the_code():
-    assert cache.key("a", packages=("pendsym",)) != cache.key("a", packages=("pendsym", "derivations.charbonnier1908"))
-    assert cache.key("a") == cache.key("a") != cache.key("b")
-
-
-def test_file_hash(tmp_path):
-    f = tmp_path / "f"
-    f.write_bytes(b"abc")
-    assert cache.file_hash(f) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
 
 
 def test_bad_keys_are_refused(cdir):
@@ -120,7 +114,7 @@ class Plant:
 
 def test_planted_pickle_and_crafted_json_never_run(cdir, tmp_path):
     marker = tmp_path / "ran"
-    k = cache.key("planted")
+    k = key("planted")
     f = entry(cdir, k)
     f.parent.mkdir(parents=True)
     f.with_suffix(".pickle").write_bytes(pickle.dumps(Plant(marker)))
@@ -128,7 +122,7 @@ def test_planted_pickle_and_crafted_json_never_run(cdir, tmp_path):
     payload = {"$": "dataclass", "module": "builtins", "qualname": "open",
                "fields": {"file": str(marker), "mode": "w"}}
     f.write_text(json.dumps({"format": 1, "key": k, "checksum": cache.checksum(payload), "payload": payload}))
-    k2 = cache.key("planted", "2")
+    k2 = key("planted", "2")
     entry(cdir, k2).parent.mkdir(exist_ok=True)
     entry(cdir, k2).write_bytes(pickle.dumps(Plant(marker)))   # a pickle under the .json name
     count = Counter()
@@ -165,7 +159,7 @@ def garbage(rng, valid: bytes) -> bytes:
 
 def test_garbage_in_every_entry_is_recomputed_and_replaced(cdir):
     rng = random.Random(9)
-    keys = [cache.key("garbage", str(i)) for i in range(60)]
+    keys = [key("garbage", str(i)) for i in range(60)]
     values = [VALUES[i % len(VALUES)] for i in range(len(keys))]
     for k, value in zip(keys, values):
         cache.memo(k, lambda: value)
@@ -182,7 +176,7 @@ def test_garbage_in_every_entry_is_recomputed_and_replaced(cdir):
 
 
 def test_swapped_entries_are_both_recomputed(cdir):
-    ka, kb = cache.key("swap", "a"), cache.key("swap", "b")
+    ka, kb = key("swap", "a"), key("swap", "b")
     cache.memo(ka, lambda: "evidence of a")
     cache.memo(kb, lambda: "evidence of b")
     fa, fb = entry(cdir, ka), entry(cdir, kb)
@@ -197,7 +191,7 @@ def test_swapped_entries_are_both_recomputed(cdir):
 
 
 def test_entry_that_does_not_decode_is_replaced(cdir, monkeypatch):
-    k = cache.key("undecodable")
+    k = key("undecodable")
     payload = {"$": "basic", "class": {"sympy": "Add"}, "args": [1, 2]}   # valid JSON, bad codec data
     f = entry(cdir, k)
     f.parent.mkdir(parents=True)
@@ -216,19 +210,19 @@ def test_entry_that_does_not_decode_is_replaced(cdir, monkeypatch):
 
 
 def test_oversized_entry_is_replaced_and_not_written(cdir, monkeypatch):
-    k = cache.key("big")
+    k = key("big")
     cache.memo(k, lambda: "small")
     f = entry(cdir, k)
     f.write_bytes(f.read_bytes() + b" " * 4096)       # still a valid entry, but too big
     monkeypatch.setattr(cache, "MAX_BYTES", 1024)
     assert cache.load(k) is cache.MISSING
     assert cache.memo(k, lambda: "small") == "small" and f.stat().st_size < 1024
-    k2 = cache.key("big", "2")
+    k2 = key("big", "2")
     assert cache.store(k2, "x" * 5000) is False and not entry(cdir, k2).exists()
 
 
 def test_fifo_or_directory_in_place_of_an_entry(cdir):
-    k, k2 = cache.key("fifo"), cache.key("dir")
+    k, k2 = key("fifo"), key("dir")
     entry(cdir, k).parent.mkdir(parents=True, exist_ok=True)
     os.mkfifo(entry(cdir, k))                         # opening it to read would block
     entry(cdir, k2).parent.mkdir(parents=True, exist_ok=True)
@@ -238,7 +232,7 @@ def test_fifo_or_directory_in_place_of_an_entry(cdir):
 
 
 def test_old_pickle_entries_are_ignored(cdir):
-    k = cache.key("old")
+    k = key("old")
     f = entry(cdir, k).with_suffix(".pickle")
     f.parent.mkdir(parents=True)
     f.write_bytes(pickle.dumps("stale"))
@@ -247,7 +241,7 @@ def test_old_pickle_entries_are_ignored(cdir):
 
 # ----------------------------------------------------------------- writing
 def test_unencodable_value_is_returned_not_stored(cdir):
-    k = cache.key("unencodable")
+    k = key("unencodable")
     fn = lambda: 1                                     # noqa: E731
     count = Counter()
     assert cache.memo(k, count(fn)) is fn
@@ -260,7 +254,7 @@ def test_unencodable_value_is_returned_not_stored(cdir):
 def test_entry_mode_respects_the_umask(cdir, umask, mode):
     old = os.umask(umask)
     try:
-        k = cache.key("mode", oct(umask))
+        k = key("mode", oct(umask))
         assert cache.store(k, [1, 2]) is True
     finally:
         os.umask(old)
@@ -270,12 +264,12 @@ def test_entry_mode_respects_the_umask(cdir, umask, mode):
 
 def test_clear_removes_only_entries(cdir):
     for i in range(5):
-        cache.store(cache.key("clear", str(i)), i)
+        cache.store(key("clear", str(i)), i)
     (cdir / "notes.txt").write_text("mine")
     assert cache.clear() == 5
     assert [p.name for p in cdir.iterdir()] == ["notes.txt"]
     (cdir / "notes.txt").unlink()
-    cache.store(cache.key("clear"), 1)
+    cache.store(key("clear"), 1)
     assert cache.clear() == 1 and not cdir.exists()
 
 

@@ -57,3 +57,13 @@ def test_the_tree_key_sees_every_source_file(pkg):
     (pkg / "sec_b.py").write_text("import math  # edited\n")
     keys.file_hash.cache_clear()
     assert keys.tree_key(("keypkg",), "full") != before
+
+
+def test_file_hash_is_the_sha256_of_the_bytes(tmp_path):
+    f = tmp_path / "f"
+    f.write_bytes(b"abc")
+    assert keys.file_hash(f) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
+
+
+def test_digest_separates_its_parts():
+    assert keys.digest(("a", "bc")) == keys.digest(("a", "bc")) != keys.digest(("ab", "c"))
