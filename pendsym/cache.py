@@ -169,11 +169,17 @@ def store(k: str, value: Any) -> bool:
 
 def memo(k: str, compute: Callable[[], T]) -> T:
     """compute(), or its stored value under key k (an invalid entry is recomputed and replaced)."""
+    return memo_fresh(k, compute)[0]
+
+
+def memo_fresh(k: str, compute: Callable[[], T]) -> tuple[T, bool]:
+    """(value, computed): as :func:`memo`, and whether the value was computed now."""
     value = load(k)
-    if value is MISSING:
-        value = compute()
-        store(k, value)
-    return value
+    if value is not MISSING:
+        return value, False
+    value = compute()
+    store(k, value)
+    return value, True
 
 
 def clear() -> int:

@@ -97,39 +97,40 @@ def _forms(spec: Spec, built: Mapping[str, Result]) -> tuple[sp.Basic, sp.Basic 
     return r.derived, r.printed
 
 
-def _build_ids(pl: Plan, ids: list[str], built: dict) -> dict[str, Result]:
-    """Results of ids (dependencies first), their forms from the cache or built here."""
+def _build_ids(pl: Plan, ids: list[str], built: dict) -> list[str]:
+    """Results of ids (dependencies first) into ``built``, their forms from the cache or built here;
+    the ids built anew."""
+    fresh = []
     for rid in ids:
         spec = pl.specs[rid]
-        derived, printed = cache.memo(pl.key("built", rid), functools.partial(_forms, spec, built))
+        (derived, printed), computed = cache.memo_fresh(pl.key("built", rid), functools.partial(_forms, spec, built))
         built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={d: built[d] for d in spec.deps})
-    return built
+        if computed:
+            fresh.append(rid)
+    return fresh
 
 
-def _forms_of(pl: Plan, ids: list[str]) -> dict:
-    built = _build_ids(pl, ids, {})
-    return {i: (built[i].derived, built[i].printed) for i in ids}
+def _forms_of(pl: Plan, ids: list[str]) -> tuple[dict, list[str]]:
+    built: dict[str, Result] = {}
+    fresh = _build_ids(pl, ids, built)
+    return {i: (built[i].derived, built[i].printed) for i in ids}, fresh
 
 
 def build(pl: Plan, log: Log) -> dict[str, Result]:
     """Every Result.  The memoir with the most Results is built here (its derivation caches stay
     warm for the forked checks) while a forked process builds the others."""
     start = time.monotonic()
-    fresh = [i for i in pl.order if cache.load(pl.key("built", i)) is cache.MISSING]
     home = max(pl.memoirs, key=lambda m: sum(1 for i in pl.order if pl.specs[i].memoir == m))
     away = [i for i in pl.order if pl.specs[i].memoir != home]
     built: dict[str, Result] = {}
-    if fresh and any(pl.specs[i].memoir != home for i in fresh):
-        pending = schedule.in_background(_forms_of, pl, away)
-        _build_ids(pl, [i for i in pl.order if pl.specs[i].memoir == home], built)
-        for rid, (derived, printed) in pending().items():
-            spec = pl.specs[rid]
-            built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={})
-        built = _rewire(pl, built)
-    else:
-        _build_ids(pl, list(pl.order), built)
-    log(f"built {len(built)} results ({len(fresh)} derived anew) in {time.monotonic() - start:.0f} s")
-    return built
+    pending = schedule.in_background(_forms_of, pl, away)
+    fresh = _build_ids(pl, [i for i in pl.order if pl.specs[i].memoir == home], built)
+    forms, fresh_away = pending()
+    for rid, (derived, printed) in forms.items():
+        built[rid] = Result(spec=pl.specs[rid], derived=derived, printed=printed, deps={})
+    log(f"built {len(built)} results ({len(fresh) + len(fresh_away)} derived anew) "
+        f"in {time.monotonic() - start:.0f} s")
+    return _rewire(pl, built)
 
 
 def _rewire(pl: Plan, built: dict[str, Result]) -> dict[str, Result]:
@@ -144,12 +145,12 @@ def _rewire(pl: Plan, built: dict[str, Result]) -> dict[str, Result]:
 # ----------------------------------------------------------------- compare and check
 def _assess_job(job: tuple, level: str, keys_of: Mapping[str, str]) -> list:
     """A job of one worker: the comparison and check of each Result (cached), with the seconds
-    each took (0 from the cache)."""
+    each took and whether it was checked now."""
     out = []
     for r in job:
         start = time.monotonic()
-        value = cache.memo(keys_of[r.id], functools.partial(pipeline.assessed, r, level))
-        out.append((value, time.monotonic() - start))
+        value, computed = cache.memo_fresh(keys_of[r.id], functools.partial(pipeline.assessed, r, level))
+        out.append((value, time.monotonic() - start, computed))
     return out
 
 
@@ -159,7 +160,6 @@ def compare_and_check(pl: Plan, built: Mapping[str, Result], log: Log,
     then the chains.  Only Results whose key changed are checked anew."""
     start = time.monotonic()
     assessed_key = {i: pl.key("assessed", i) for i in pl.order}
-    todo = [i for i in pl.order if cache.load(assessed_key[i]) is cache.MISSING]
     by_cost = sorted(pl.memoirs, key=lambda m: -registry.memoir(m).cost)
     ordered = [i for m in by_cost for i in pl.order if pl.specs[i].memoir == m]
     groups = [g for m in pl.memoirs for g in registry.memoir(m).affinity]
@@ -172,8 +172,10 @@ def compare_and_check(pl: Plan, built: Mapping[str, Result], log: Log,
             progress(done_ids[0], len(pl.order))
     outs = schedule.per_result(jobs, list(jobs), functools.partial(_assess_job, level=pl.level, keys_of=assessed_key),
                                progress=tick)
-    done = {r.id: o for job, out in zip(jobs.values(), outs) for r, (o, _) in zip(job, out)}
-    took = {r.id: t for job, out in zip(jobs.values(), outs) for r, (_, t) in zip(job, out)}
+    runs = {r.id: run for job, out in zip(jobs.values(), outs) for r, run in zip(job, out)}
+    done = {i: value for i, (value, _, _) in runs.items()}
+    took = {i: seconds for i, (_, seconds, computed) in runs.items() if computed}
+    todo = [i for i in pl.order if i in took]
     records = [pipeline.Record(built[i], *done[i][0], done[i][1]) for i in pl.order]
     log(f"checked {len(todo)} results anew ({len(pl.order) - len(todo)} from the cache) "
         f"in {time.monotonic() - start:.0f} s" + (f": {_sections(pl, todo)}" if todo else ""))
@@ -200,10 +202,11 @@ def _compared(result: Result):
 
 def _sections(pl: Plan, ids: list[str]) -> str:
     """The sections the ids belong to, with their counts."""
+    wanted = set(ids)
     count: dict[str, int] = {}
     for m in pl.memoirs:
         for sec in registry.memoir(m).sections:
-            n = sum(1 for i in ids if i in set(sec.ids))
+            n = len(wanted.intersection(sec.ids))
             if n:
                 count[sec.module] = n
     return ", ".join(f"{mod} ({n})" for mod, n in count.items())
@@ -226,7 +229,8 @@ def kernel_key(result: Result, emitter: str) -> str:
 
 
 def _kernel_job(result: Result, key: str):
-    return cache.memo(key, functools.partial(kn.kernel_of, result))
+    """(kernel or None, formed now?)."""
+    return cache.memo_fresh(key, functools.partial(kn.kernel_of, result))
 
 
 def form_kernels(pl: Plan, built: Mapping[str, Result], log: Log) -> dict[str, list]:
@@ -234,11 +238,11 @@ def form_kernels(pl: Plan, built: Mapping[str, Result], log: Log) -> dict[str, l
     start = time.monotonic()
     ids = kernel_ids(pl, built)
     key_of = {i: kernel_key(built[i], pl.emitter) for i in ids}
-    fresh = sum(1 for i in ids if cache.load(key_of[i]) is cache.MISSING)
     jobs = {i: built[i] for i in ids}
     outs = schedule.per_result(jobs, ids, lambda r: _kernel_job(r, key_of[r.id]))
+    fresh = sum(1 for _, computed in outs if computed)
     formed = {m: [] for m in pl.memoirs}
-    for i, k in zip(ids, outs):
+    for i, (k, _) in zip(ids, outs):
         if k is not None:
             formed[pl.specs[i].memoir].append(k)
     log(f"formed {len(ids)} kernels ({fresh} anew) in {time.monotonic() - start:.0f} s")
@@ -260,22 +264,21 @@ def measure_c(pl: Plan, built: Mapping[str, Result], formed: dict[str, list], lo
     if not shutil.which("cc"):
         return formed
     start = time.monotonic()
-    out: dict[str, list] = {}
+    accuracy = {k.result_id: cache.load(_c_key(built[k.result_id], pl)) for ks in formed.values() for k in ks}
     with tempfile.TemporaryDirectory() as tmp:
         jobs = {}
         for memoir, ks in formed.items():
-            missing = [k for k in ks if cache.load(_c_key(built[k.result_id], pl)) is cache.MISSING]
+            missing = [k for k in ks if accuracy[k.result_id] is cache.MISSING]
             if missing:
                 d = Path(tmp) / memoir
                 d.mkdir()
                 lib = kn.compile_c(files.c_standalone(memoir, ks), d)
                 jobs.update({k.result_id: (lib, k, built[k.result_id]) for k in missing})
-        measured = dict(zip(jobs, schedule.per_result(jobs, list(jobs), _c_job)))
-        for rid, acc in measured.items():
+        for rid, acc in zip(jobs, schedule.per_result(jobs, list(jobs), _c_job)):
             cache.store(_c_key(built[rid], pl), acc)
-    for memoir, ks in formed.items():
-        out[memoir] = [dataclasses.replace(k, c_accuracy=measured[k.result_id] if k.result_id in measured
-                                           else cache.load(_c_key(built[k.result_id], pl))) for k in ks]
+            accuracy[rid] = acc
+    out = {memoir: [dataclasses.replace(k, c_accuracy=accuracy[k.result_id]) for k in ks]
+           for memoir, ks in formed.items()}
     log(f"measured {len(jobs)} C kernels anew in {time.monotonic() - start:.0f} s")
     return out
 
