@@ -18,7 +18,7 @@ import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Iterable, Sequence
+from typing import Sequence
 
 LIMIT_PT = 5.0
 WRAP = 79   # TeX wraps its log at max_print_line characters (79 by default)

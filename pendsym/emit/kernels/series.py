@@ -49,7 +49,7 @@ def _mul(a: list, b: list, n: int) -> list:
 def _series_of_polynomial(p: sp.Expr, gens: tuple, series: dict, n: int) -> list | None:
     """The truncated power series (n terms) of a polynomial in x and functions of x, each
     function replaced by its series; None when p is not such a polynomial."""
-    x, atoms = gens[0], gens[1:]
+    atoms = gens[1:]   # gens[0] is x itself
     poly = p.as_poly(*gens)
     if poly is None or not all(cf.is_Rational for cf in poly.coeffs()):
         return None
