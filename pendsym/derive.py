@@ -28,8 +28,8 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
         return Outcome((), (), ("nothing changed",), nothing_changed=True)
     plan = stages.plan(level)
     built = stages.build(plan, log)                                # build (forms cached per Result)
-    records = stages.compare_and_check(plan, built, log, progress)  # compare → check → chains
-    formed = stages.form_kernels(plan, built, log)                 # stable forms, measured in Python
+    records, formed = stages.check_and_form(plan, built, log, progress)  # compare → check → chains,
+    #                                                                and stable forms measured in Python
     formed = stages.measure_c(plan, built, formed, log)            # the emitted C, measured
     texts = stages.emit(plan, records, formed, out, log)           # kernels, reports, results.json
     failed = tuple(r.result.id for r in stages.failures(records))

@@ -19,17 +19,20 @@ class Section:
     """One section of a memoir: the module (or package) that builds its Specs.
 
     The section's source, and the engine and memoir modules it imports, are
-    what its Results' cache keys cover (see :mod:`pendsym.keys`).
+    what its Results' cache keys cover (see :mod:`pendsym.keys`).  ``shared``: its
+    checks compute the same costly truths (kept in the section's in-process caches),
+    so they are scheduled in one worker, which computes each truth once.
     """
 
     module: str                  # dotted name of the module whose ``specs()`` gives the Specs
     title: str
     specs: tuple[Spec, ...]
+    shared: bool = False
 
     @classmethod
-    def of(cls, module: ModuleType, title: str) -> "Section":
+    def of(cls, module: ModuleType, title: str, shared: bool = False) -> "Section":
         """The section built by ``module.specs()``."""
-        return cls(module.__name__, title, tuple(module.specs()))
+        return cls(module.__name__, title, tuple(module.specs()), shared)
 
     @property
     def ids(self) -> tuple[str, ...]:
@@ -68,6 +71,11 @@ class Memoir:
     @property
     def specs(self) -> tuple[Spec, ...]:
         return tuple(s for sec in self.sections for s in sec.specs)
+
+    def check_groups(self) -> tuple[tuple[str, ...], ...]:
+        """The groups of Results whose checks run in one worker: the affinity groups and the
+        shared sections."""
+        return self.affinity + tuple(sec.ids for sec in self.sections if sec.shared)
 
     def report_headings(self) -> tuple[Heading, ...]:
         return self.headings or tuple(Heading(sec.title, sec.ids) for sec in self.sections)

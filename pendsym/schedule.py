@@ -112,14 +112,22 @@ def in_background(fn: Callable, *args):
 
 def jobs_by_affinity(ids: Sequence[str], groups: Sequence[Sequence[str]]) -> list[tuple[str, ...]]:
     """One job per id, except each affinity group whose members are all present, which is one job
-    (its checks share computations in one worker).  Keeps the order of ``ids``."""
+    (its checks share computations in one worker); groups that overlap are one job.  Keeps the
+    order of ``ids``."""
     present = set(ids)
-    group_of = {i: tuple(g) for g in groups if all(x in present for x in g) for i in g}
+    group_of: dict[str, set] = {}
+    for g in groups:
+        if not all(x in present for x in g):
+            continue
+        merged = set(g).union(*(group_of.get(x, ()) for x in g))
+        for x in merged:
+            group_of[x] = merged
     out, placed = [], set()
     for i in ids:
         if i in placed:
             continue
-        job = group_of.get(i, (i,))
+        members = group_of.get(i, {i})
+        job = tuple(x for x in ids if x in members)
         placed.update(job)
         out.append(job)
     return out

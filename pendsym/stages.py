@@ -1,6 +1,6 @@
 """The stages of ``make derive``, each a plain function; :mod:`pendsym.derive` is their spine.
 
-plan → build → compare and check → form kernels → measure C → emit → write.
+plan → build → compare, check and form kernels (one pool) → measure C → emit → write.
 
 Every stage that computes goes through the cache (:mod:`pendsym.cache`) under the
 content keys of :mod:`pendsym.keys`, so a stage redoes only what changed; the
@@ -142,7 +142,7 @@ def _rewire(pl: Plan, built: dict[str, Result]) -> dict[str, Result]:
     return out
 
 
-# ----------------------------------------------------------------- compare and check
+# ----------------------------------------------------------------- compare, check, form kernels
 def _assess_job(job: tuple, level: str, keys_of: Mapping[str, str]) -> list:
     """A job of one worker: the comparison and check of each Result (cached), with the seconds
     each took and whether it was checked now."""
@@ -154,40 +154,79 @@ def _assess_job(job: tuple, level: str, keys_of: Mapping[str, str]) -> list:
     return out
 
 
-def compare_and_check(pl: Plan, built: Mapping[str, Result], log: Log,
-                      progress: Callable[[int, int], None] | None = None) -> list[pipeline.Record]:
-    """Stages 2–3 for every Result (the costliest memoirs first, affinity groups in one worker),
-    then the chains.  Only Results whose key changed are checked anew."""
+def _kernel_job(result: Result, key: str):
+    """(kernel or None, formed now?)."""
+    return cache.memo_fresh(key, functools.partial(kn.kernel_of, result))
+
+
+def _pool_job(job: tuple, level: str, keys_of: Mapping[str, str]):
+    """One job of the pool: ("check", Results) or ("kernel", Result)."""
+    kind, payload = job
+    if kind == "check":
+        return _assess_job(payload, level, keys_of)
+    return _kernel_job(payload, keys_of[f"kernel:{payload.id}"])
+
+
+def check_and_form(pl: Plan, built: Mapping[str, Result], log: Log,
+                   progress: Callable[[int, int], None] | None = None) -> tuple[list[pipeline.Record], dict[str, list]]:
+    """Stages 2–3 for every Result (printed ≡ derived?, the independent check, then the chains) and
+    the kernels' stable forms (chosen and measured in Python), in one pool of workers: the checks
+    first (the costliest memoirs first, each group of shared truths in one worker), then the kernels,
+    so that no core idles while the last checks run.  Only what changed is computed anew."""
     start = time.monotonic()
-    assessed_key = {i: pl.key("assessed", i) for i in pl.order}
+    keys_of = {i: pl.key("assessed", i) for i in pl.order}
     by_cost = sorted(pl.memoirs, key=lambda m: -registry.memoir(m).cost)
     ordered = [i for m in by_cost for i in pl.order if pl.specs[i].memoir == m]
-    groups = [g for m in pl.memoirs for g in registry.memoir(m).affinity]
-    jobs = {job[0]: tuple(built[i] for i in job) for job in schedule.jobs_by_affinity(ordered, groups)}
+    groups = [g for m in pl.memoirs for g in registry.memoir(m).check_groups()]
+    jobs = {job[0]: ("check", tuple(built[i] for i in job)) for job in schedule.jobs_by_affinity(ordered, groups)}
+    kernel_ids_ = kernel_ids(pl, built)
+    keys_of.update({f"kernel:{i}": kernel_key(built[i], pl.emitter) for i in kernel_ids_})
+    jobs.update({f"kernel:{i}": ("kernel", built[i]) for i in kernel_ids_})
     done_ids: list[int] = [0]
 
     def tick(first: str) -> None:
-        done_ids[0] += len(jobs[first])
-        if progress:
-            progress(done_ids[0], len(pl.order))
-    outs = schedule.per_result(jobs, list(jobs), functools.partial(_assess_job, level=pl.level, keys_of=assessed_key),
-                               progress=tick)
-    runs = {r.id: run for job, out in zip(jobs.values(), outs) for r, run in zip(job, out)}
+        kind, payload = jobs[first]
+        if kind == "check":
+            done_ids[0] += len(payload)
+            if progress:
+                progress(done_ids[0], len(pl.order))
+    outs = dict(zip(jobs, schedule.per_result(jobs, list(jobs), functools.partial(
+        _pool_job, level=pl.level, keys_of=keys_of), progress=tick)))
+    records = _records(pl, built, {first: outs[first] for first, (kind, _) in jobs.items() if kind == "check"},
+                       jobs, log)
+    formed = _formed(pl, [(i, outs[f"kernel:{i}"]) for i in kernel_ids_], log)
+    log(f"checks and kernel forms took {time.monotonic() - start:.0f} s")
+    return records, formed
+
+
+def _records(pl: Plan, built: Mapping[str, Result], outs: Mapping[str, list], jobs: Mapping[str, tuple],
+             log: Log) -> list[pipeline.Record]:
+    runs = {r.id: run for first, out in outs.items() for r, run in zip(jobs[first][1], out)}
     done = {i: value for i, (value, _, _) in runs.items()}
     took = {i: seconds for i, (_, seconds, computed) in runs.items() if computed}
     todo = [i for i in pl.order if i in took]
     records = [pipeline.Record(built[i], *done[i][0], done[i][1]) for i in pl.order]
-    log(f"checked {len(todo)} results anew ({len(pl.order) - len(todo)} from the cache) "
-        f"in {time.monotonic() - start:.0f} s" + (f": {_sections(pl, todo)}" if todo else ""))
+    log(f"checked {len(todo)} results anew ({len(pl.order) - len(todo)} from the cache)"
+        + (f": {_sections(pl, todo)}" if todo else ""))
     if todo:
         slow = sorted(took.items(), key=lambda kv: -kv[1])[:5]
         log(f"  {sum(took.values()):.0f} s of checks; slowest: " + ", ".join(f"{i} {t:.0f} s" for i, t in slow))
     return pipeline.fill_chains(records)
 
 
+def _formed(pl: Plan, outs: list, log: Log) -> dict[str, list]:
+    """Each memoir's kernels, from (id, (kernel or None, formed now?))."""
+    formed = {m: [] for m in pl.memoirs}
+    for i, (k, _) in outs:
+        if k is not None:
+            formed[pl.specs[i].memoir].append(k)
+    log(f"formed {len(outs)} kernels ({sum(1 for _, (_, computed) in outs if computed)} anew)")
+    return formed
+
+
 def assess(results, level: str = "full", run_checks: bool = True) -> list[pipeline.Record]:
     """Compare each Result (and run its check, uncached) over the cores; then fill the chains.
-    For a few Results (``pendsym derive ID``, the tests); a derive goes through compare_and_check."""
+    For a few Results (``pendsym derive ID``, the tests); a derive goes through check_and_form."""
     results = list(results)
     by_id = {r.id: r for r in results}
     fn = functools.partial(pipeline.assessed, level=level) if run_checks else _compared
@@ -226,27 +265,6 @@ def kernel_key(result: Result, emitter: str) -> str:
     return keys.digest(("kernel", keys.FORMAT, *keys.versions(), result.id, sp.srepr(result.derived),
                         sp.srepr(result.printed), repr(spec.kernel), sp.srepr(sp.Tuple(*(sp.Tuple(*d) for d in spec.defs))),
                         spec.title, spec.source.ref(), emitter))
-
-
-def _kernel_job(result: Result, key: str):
-    """(kernel or None, formed now?)."""
-    return cache.memo_fresh(key, functools.partial(kn.kernel_of, result))
-
-
-def form_kernels(pl: Plan, built: Mapping[str, Result], log: Log) -> dict[str, list]:
-    """Each memoir's kernels: stable forms chosen and measured in Python (cached per Result)."""
-    start = time.monotonic()
-    ids = kernel_ids(pl, built)
-    key_of = {i: kernel_key(built[i], pl.emitter) for i in ids}
-    jobs = {i: built[i] for i in ids}
-    outs = schedule.per_result(jobs, ids, lambda r: _kernel_job(r, key_of[r.id]))
-    fresh = sum(1 for _, computed in outs if computed)
-    formed = {m: [] for m in pl.memoirs}
-    for i, (k, _) in zip(ids, outs):
-        if k is not None:
-            formed[pl.specs[i].memoir].append(k)
-    log(f"formed {len(ids)} kernels ({fresh} anew) in {time.monotonic() - start:.0f} s")
-    return formed
 
 
 def _c_key(result: Result, pl: Plan) -> str:

@@ -29,6 +29,13 @@ def test_affinity_groups_run_as_one_job_in_order():
     assert jobs == [("a",), ("b", "d"), ("c",), ("e",)]     # a group with an absent member is split
 
 
+def test_overlapping_groups_are_one_job_and_no_id_runs_twice():
+    ids = ["a", "b", "c", "d", "e"]
+    jobs = schedule.jobs_by_affinity(ids, [("d", "b"), ("e", "d"), ("a",)])
+    assert jobs == [("a",), ("b", "d", "e"), ("c",)]
+    assert sorted(i for job in jobs for i in job) == ids
+
+
 def test_background_value_and_failure(monkeypatch):
     monkeypatch.setenv("PENDSYM_WORKERS", "2")
     assert schedule.in_background(_square, 7)() == 49

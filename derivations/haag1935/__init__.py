@@ -7,7 +7,8 @@ from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
     Section.of(ch1_motion, "Chapter I. End loads, equations of motion, foci, periods, existence (21)–(41)"),
-    Section.of(ch1_variations, "Chapter I. Small variations of the periods, temperature, g (42)–(63)"),
+    # its checks differentiate the same varied blades (the stencils of ch1_variations.truth)
+    Section.of(ch1_variations, "Chapter I. Small variations of the periods, temperature, g (42)–(63)", shared=True),
     Section.of(ch1_launch, "Chapter I. Principal oscillation and launching (64)–(76)"),
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
