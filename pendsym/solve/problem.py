@@ -162,7 +162,7 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
         if "phi" not in data:
             raise ProblemError(f"{where}: phi (the perturbation in θ'' + k²θ + phi = 0) is missing")
         k = formula("k", data.get("k", "1"), env_const)
-        phi = formula("phi", data["phi"], env)
+        phi = formula("phi", data["phi"], {"k": k, **env} if "k" not in env else env)
     if k.has(eps):
         raise ProblemError(f"{where}: k must not depend on the small parameter (put that part in phi)")
     init = data.get("initial", {})
