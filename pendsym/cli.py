@@ -37,7 +37,7 @@ def _parser(with_keys: bool = True) -> Parser:
     keys = ", ".join(registry.memoirs()) if with_keys else "see pendsym list --help"
     p = Parser(prog="pendsym", description="Rebuild and check the classical perturbation theory of the pendulum.",
                epilog="exit codes: 0 success, 1 a check failed, 2 bad input, 130 interrupted")
-    sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser, metavar="{list,derive,check,scene}")
+    sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser, metavar="{list,derive,check,scene,solve}")
     ls = sub.add_parser("list", help="the Results, with their status", epilog=f"memoir keys: {keys}")
     ls.add_argument("--memoir", help=f"a memoir key ({keys})")
     ls.add_argument("--json", action="store_true", help="JSON output")
@@ -56,7 +56,20 @@ def _parser(with_keys: bool = True) -> Parser:
     ck.add_argument("id")
     ck.add_argument("--level", choices=("quick", "full"), default="full")
     ck.add_argument("--json", action="store_true", help="the record as in generated/results.json")
+    sv = sub.add_parser("solve", help="solve and verify your own perturbation problem (TOML, docs/solve.md)")
+    sv.add_argument("file")
+    sv.add_argument("--no-verify", action="store_true", help="skip the verification by integration (said in the output)")
     return p
+
+
+def cmd_solve(args) -> int:
+    from . import solve as solver        # SymPy-heavy: imported only for this command
+    try:
+        sol = solver.solve(solver.load(args.file), verify=not args.no_verify)
+    except solver.REFUSALS as exc:
+        raise UsageError(str(exc)) from None
+    print(sol.report())
+    return 1 if sol.verified is False else 0
 
 
 def cmd_list(args) -> int:
@@ -223,7 +236,8 @@ def main(argv=None) -> int:
             return 0
         asks_help = any(a in ("-h", "--help") for a in argv)
         args = _parser(with_keys=asks_help).parse_args(argv)
-        return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check, "scene": cmd_scene}[args.cmd](args)
+        return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check, "scene": cmd_scene,
+                "solve": cmd_solve}[args.cmd](args)
     except (UsageError, registry.UnknownResult, scene.SceneError, stages.OutputError) as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2

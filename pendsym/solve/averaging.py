@@ -97,8 +97,8 @@ def slow_flow(problem: Problem) -> SlowFlow:
     return SlowFlow("cartesian", (a_, b_), (da, db), theta, (a0, b0))
 
 
-def integrate(problem: Problem, flow: SlowFlow, eps, t_end, dps: int):
-    """θ and θ'/k of the averaged motion at t_end (the slow flow integrated by mpmath)."""
+def integrate(problem: Problem, flow: SlowFlow, eps, times, dps: int) -> list:
+    """[(θ, θ')] of the averaged motion at the increasing ``times`` (the slow flow integrated by mpmath)."""
     vals = problem.values()
     sub = lambda e: e.subs(vals).subs(problem.small, sp.Rational(str(eps)))
     f = [engine.lambdify_mp(sub(r), (problem.t, *flow.variables)) for r in flow.rates]
@@ -107,6 +107,9 @@ def integrate(problem: Problem, flow: SlowFlow, eps, t_end, dps: int):
     with mp.workdps(dps):
         y0 = [engine.value_at(sub(s), {}) for s in flow.start]
     traj = model.integrate(lambda t, y: [f[0](t, *y), f[1](t, *y)], y0, dps=dps)
+    out = []
     with mp.workdps(dps):
-        y = traj(t_end)
-        return th(mp.mpf(t_end), *y), dth(mp.mpf(t_end), *y)
+        for s in times:
+            y = traj(s)
+            out.append((th(mp.mpf(s), *y), dth(mp.mpf(s), *y)))
+    return out

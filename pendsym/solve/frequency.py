@@ -26,7 +26,7 @@ class NotApplicable(ValueError):
 class FrequencyAnswer:
     omega: sp.Expr          # ω to the order wanted, in the problem's small parameter
     period: sp.Expr         # 2π/ω expanded to the same order
-    motion: sp.Expr         # θ(t) to the order wanted (τ = ωt written out)
+    motion: sp.Expr         # θ to the order wanted, in τ = ωt (the symbol tau)
     expected: int           # the order of the first neglected term (for the fitted-order check)
     scaled: bool            # the small parameter is the amplitude
     steps: str              # how it was expanded, in words
@@ -76,11 +76,10 @@ def solve(problem: Problem) -> FrequencyAnswer:
     exp = lindstedt.expand(parts, problem.k, a, b, mu, steps_n)
     back = eps**2 if even else eps
     omega = sp.expand(exp.frequency().subs(mu, back))
-    tau = sp.Symbol("tau_", real=True)
+    tau = sp.Symbol("tau", real=True)
     motion = sp.expand(exp.motion(tau).subs(mu, back))
     if in_ics:
         motion = sp.expand(eps * motion)
-    motion = motion.subs(tau, omega * problem.t)
     period = sp.expand(sp.series(2 * sp.pi / omega, eps, 0, n + 1).removeO())
     expected = 2 * steps_n + 2 if even else n + 1
     how = (f"Lindstedt–Poincaré in {eps}² to order {steps_n} (only even powers of {eps} occur; "
