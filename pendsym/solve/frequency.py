@@ -73,7 +73,12 @@ def solve(problem: Problem) -> FrequencyAnswer:
         raise NotApplicable(str(exc)) from None
     if steps_n == 0:
         raise NotApplicable("the order asked is below the first correction (only even powers occur)")
-    exp = lindstedt.expand(parts, problem.k, a, b, mu, steps_n)
+    try:
+        exp = lindstedt.expand(parts, problem.k, a, b, mu, steps_n)
+    except lindstedt.NotAFrequency:
+        raise
+    except ValueError as exc:
+        raise NotApplicable(str(exc)) from None
     back = eps**2 if even else eps
     omega = sp.expand(exp.frequency().subs(mu, back))
     tau = sp.Symbol("tau", real=True)

@@ -132,6 +132,7 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
     theta, dtheta = sp.Symbol(var, real=True), sp.Symbol(vel, real=True)
     t, eps = sp.Symbol(tim, real=True), sp.Symbol(small, positive=True)
     psyms = {p: sp.Symbol(p, real=True) for p in params}
+    pvals = {psyms[p]: _number_text(p, v) for p, v in params.items()}
     env_const = {small: eps, **psyms}
     env = {var: theta, vel: dtheta, tim: t, **env_const}
 
@@ -170,6 +171,8 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
         raise ProblemError(f"{where}: [initial] holds value and velocity only")
     theta_i = formula("initial value", init.get("value", "0"), env_const)
     omega_i = formula("initial velocity", init.get("velocity", "0"), env_const)
+    if theta_i == 0 and omega_i == 0:
+        raise ProblemError(f"{where}: [initial] value and velocity are both 0: the unperturbed motion is at rest")
     ver = data.get("verify", {})
     if not isinstance(ver, dict) or set(ver) - {"small", "points", "dps"}:
         raise ProblemError(f"{where}: [verify] holds small, points and dps only")
@@ -183,7 +186,6 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
     dps = ver.get("dps", 30)
     if isinstance(dps, bool) or not isinstance(dps, int) or not 30 <= dps <= 60:
         raise ProblemError(f"{where}: verify.dps must be an integer from 30 to 60")
-    pvals = {psyms[p]: _number_text(p, v) for p, v in params.items()}
     name = data.get("name", "problem")
     if not isinstance(name, str) or len(name) > 200:
         raise ProblemError(f"{where}: name must be a short string")
