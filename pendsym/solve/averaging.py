@@ -57,8 +57,9 @@ def _slow_part(expr: sp.Expr, t: sp.Symbol, small: sp.Symbol) -> sp.Expr:
     return sp.simplify(sp.expand(keep.rewrite(sp.cos)))
 
 
-def _mean_piecewise(f: sp.Expr, psi: sp.Symbol) -> sp.Expr:
-    """(1/2π)∫_0^{2π} f dψ, with abs and sign resolved on each quarter period."""
+def _mean_piecewise(f: sp.Expr, psi: sp.Symbol, num: dict) -> sp.Expr:
+    """(1/2π)∫_0^{2π} f dψ, with abs and sign resolved on each quarter period (their signs probed
+    at the parameters' values ``num`` and r = 1; the integral stays symbolic)."""
     total = sp.S.Zero
     kinks = [a for a in f.atoms(sp.Abs, sp.sign)]
     for j in range(4):
@@ -66,7 +67,7 @@ def _mean_piecewise(f: sp.Expr, psi: sp.Symbol) -> sp.Expr:
         piece = f
         for atom in kinks:
             arg = atom.args[0]
-            probe = [arg.subs({psi: lo + (hi - lo) * s / 8}).subs(r_, 1) for s in range(1, 8)]
+            probe = [arg.subs(num).subs({psi: lo + (hi - lo) * s / 8}).subs(r_, 1) for s in range(1, 8)]
             signs = {sp.sign(sp.N(p)) for p in probe}
             signs.discard(0)
             if len(signs) != 1 or not all(p.is_number for p in probe):
@@ -86,8 +87,9 @@ def slow_flow(problem: Problem) -> SlowFlow:
             raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
         on = phi.subs({problem.theta: r_ * sp.cos(psi_), problem.dtheta: -r_ * k * sp.sin(psi_)},
                       simultaneous=True)
-        dr = _mean_piecewise(on * sp.sin(psi_) / k, psi_)
-        dbeta = _mean_piecewise(on * sp.cos(psi_) / (k * r_), psi_)
+        num = problem.values()
+        dr = _mean_piecewise(on * sp.sin(psi_) / k, psi_, num)
+        dbeta = _mean_piecewise(on * sp.cos(psi_) / (k * r_), psi_, num)
         return SlowFlow("polar", (r_, beta_), (dr, dbeta), r_ * sp.cos(k * t + beta_),
                         (sp.sqrt(a0**2 + b0**2), sp.atan2(-b0, a0)))
     theta = a_ * sp.cos(k * t) + b_ * sp.sin(k * t)
