@@ -22,6 +22,7 @@ import sympy as sp
 from .. import truth as model
 from .. import verify as engine
 from .problem import Problem
+from .secular import NEAR
 
 a_, b_ = sp.symbols("a b", real=True)
 r_, beta_ = sp.Symbol("r", positive=True), sp.Symbol("beta", real=True)
@@ -44,7 +45,10 @@ class SlowFlow:
         return [f"{sp.sstr(v)}' = {sp.sstr(r)}" for v, r in zip(self.variables, self.rates)]
 
 
-def _slow_part(expr: sp.Expr, t: sp.Symbol, small: sp.Symbol) -> sp.Expr:
+def _slow_part(expr: sp.Expr, problem: Problem) -> sp.Expr:
+    """The terms of expr whose frequency vanishes, vanishes with ε, or is under NEAR·k (slow)."""
+    t, small = problem.t, problem.small
+    kval = abs(sp.N(problem.k.subs(problem.values())))
     ex = sp.expand(sp.powsimp(sp.expand(expr.rewrite(sp.exp)), combine="exp"))
     keep = sp.S.Zero
     for term in sp.Add.make_args(ex):
@@ -52,7 +56,10 @@ def _slow_part(expr: sp.Expr, t: sp.Symbol, small: sp.Symbol) -> sp.Expr:
         for fac in sp.Mul.make_args(term):
             if fac.func == sp.exp and fac.has(t):
                 w += sp.expand(fac.args[0] / (sp.I * t))
-        if w == 0 or (w.has(small) and sp.simplify(w.subs(small, 0)) == 0):
+        if w.has(t):
+            raise NotAveraged("the time dependence is not a sum of oscillations e^{iwt}")
+        w0 = w.subs(problem.values()).subs(small, 0)
+        if w == 0 or sp.simplify(w0) == 0 or (w0.is_number and abs(sp.N(w0)) < NEAR * kval):
             keep += term
     return sp.simplify(sp.expand(keep.rewrite(sp.cos)))
 
@@ -82,6 +89,14 @@ def slow_flow(problem: Problem) -> SlowFlow:
     """The averaged equations of the problem (first order in the small parameter)."""
     t, k, phi = problem.t, problem.k, problem.phi
     a0, b0 = problem.theta_i, problem.omega_i / k
+    kinks = {atom: sp.Dummy() for atom in phi.atoms(sp.Abs, sp.sign)}
+    try:
+        poly = sp.Poly(phi.xreplace(kinks), problem.theta, problem.dtheta)
+    except sp.PolynomialError:
+        poly = None
+    if poly is None or any(c.has(problem.theta, problem.dtheta) for c in poly.coeffs()):
+        raise NotAveraged("averaging is implemented for a perturbation polynomial in the variable and its "
+                          "velocity (abs and sign allowed when autonomous)")
     if phi.has(sp.Abs, sp.sign):
         if not problem.autonomous:
             raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
@@ -94,8 +109,8 @@ def slow_flow(problem: Problem) -> SlowFlow:
                         (sp.sqrt(a0**2 + b0**2), sp.atan2(-b0, a0)))
     theta = a_ * sp.cos(k * t) + b_ * sp.sin(k * t)
     on = phi.subs({problem.theta: theta, problem.dtheta: sp.diff(theta, t)}, simultaneous=True)
-    da = _slow_part(on * sp.sin(k * t) / k, t, problem.small)
-    db = _slow_part(-on * sp.cos(k * t) / k, t, problem.small)
+    da = _slow_part(on * sp.sin(k * t) / k, problem)
+    db = _slow_part(-on * sp.cos(k * t) / k, problem)
     return SlowFlow("cartesian", (a_, b_), (da, db), theta, (a0, b0))
 
 
