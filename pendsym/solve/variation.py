@@ -80,3 +80,55 @@ def first_swing(problem: Problem) -> SwingAnswer:
     speed = sp.diff(theta0, t).subs(t, quarter) + perturbation.dtheta1(Es_q, Ec_q, eps, k, t).subs(t, quarter)
     return SwingAnswer(duration=sp.simplify(t_star + shift), shift=sp.simplify(shift),
                        amplitude=amplitude, lowest_speed=sp.simplify(sp.Abs(speed)))
+
+
+def _sums(expr: sp.Expr) -> sp.Expr:
+    """Products of sines and cosines written as sums (SymPy's product-to-sum rule TR8)."""
+    from sympy.simplify.fu import TR8
+    return sp.expand(TR8(sp.expand(expr)))
+
+
+def _duhamel(force: sp.Expr, t: sp.Symbol, k: sp.Expr) -> sp.Expr:
+    """θ_n with θ_n'' + k²θ_n = force, θ_n(0) = θ_n'(0) = 0 (variation of constants):
+    θ_n = (1/k)[sin kt ∫_0^t force cos ks ds − cos kt ∫_0^t force sin ks ds]."""
+    s = sp.Dummy("s", positive=True)
+    f = force.subs(t, s)
+
+    def integral(weight):
+        body = _sums(f * weight(k * s))
+        return sp.Add(*[sp.integrate(term, (s, 0, t), conds="none") for term in sp.Add.make_args(body)])
+    return _sums((sp.sin(k * t) * integral(sp.cos) - sp.cos(k * t) * integral(sp.sin)) / k)
+
+
+def swing_to_order(problem: Problem, n: int) -> SwingAnswer:
+    """ΔT and Δα of the first swing from rest to order n: θ = Σ εʲ θ_j by repeated variation of
+    constants (each θ_j from the εʲ part of −φ along the lower orders), then the turning time
+    t* = π/k + Σ εʲ δ_j solved order by order from θ'(t*) = 0 and θ(t*) expanded."""
+    if problem.omega_i != 0:
+        raise NotPerSwing("per-swing values need a start at rest (initial velocity 0)")
+    if problem.phi.has(sp.Abs, sp.sign):
+        raise NotPerSwing("abs or sign: the per-swing expansion is first order only")
+    t, k, eps = problem.t, problem.k, problem.small
+    theta0 = perturbation.unperturbed(t, k, problem.theta_i)
+    thetas = [theta0]
+    phi_ser = sp.series(problem.phi, eps, 0, n + 1).removeO() if problem.phi.has(eps) else problem.phi
+    for j in range(1, n + 1):
+        partial = sum((eps**i * th for i, th in enumerate(thetas)), sp.S.Zero)
+        along = phi_ser.subs({problem.theta: partial, problem.dtheta: sp.diff(partial, t)}, simultaneous=True)
+        force = -sp.expand(sp.series(along, eps, 0, j + 1).removeO()).coeff(eps, j)
+        thetas.append(_duhamel(force, t, k))
+    theta = sum((eps**i * th for i, th in enumerate(thetas)), sp.S.Zero)
+    deltas = sp.symbols(f"delta1:{n + 1}")
+    t_star = sp.pi / k + sum((eps**j * d for j, d in enumerate(deltas, start=1)), sp.S.Zero)
+    vel = sp.expand(sp.series(sp.diff(theta, t).subs(t, t_star), eps, 0, n + 1).removeO())
+    found = {}
+    for j, d in enumerate(deltas, start=1):
+        eq = sp.expand(vel.coeff(eps, j).subs(found))
+        found[d] = sp.simplify(sp.solve(eq, d)[0])
+    shift = sp.expand(sum((eps**j * found[d] for j, d in enumerate(deltas, start=1)), sp.S.Zero))
+    pos = sp.series(theta.subs(t, t_star).subs(found), eps, 0, n + 1).removeO()
+    sgn = sp.sign(problem.theta_i.subs(problem.values()))
+    amplitude = sp.simplify(sp.expand(-sgn * pos - sgn * problem.theta_i))
+    shift = sp.simplify(shift)
+    return SwingAnswer(duration=sp.pi / k + shift, shift=shift, amplitude=amplitude,
+                       lowest_speed=sp.nan)
