@@ -74,8 +74,8 @@ def cmd_solve(args) -> int:
         from .solve import answer
         try:
             rows = answer.emit(sol, Path(args.emit))
-        except OSError as exc:
-            raise UsageError(f"cannot write {args.emit}: {exc.strerror}") from None
+        except (OSError, RuntimeError) as exc:
+            raise UsageError(f"cannot emit under {args.emit}: {getattr(exc, 'strerror', None) or exc}") from None
         print(f"wrote answer.tex, answer.py, answer.c under {args.emit}/")
         for row in rows:
             print(f"  kernel {row['kernel']}({', '.join(row['args'])}): largest relative error against the formula "

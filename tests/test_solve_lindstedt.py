@@ -76,3 +76,11 @@ def test_damping_is_not_a_frequency():
     from pendsym.solve import ProblemError
     with pytest.raises(ProblemError, match="not removable by a frequency"):
         solve(pr, verify=False)
+
+
+@pytest.mark.slow
+def test_pendulum_period_fitted_order_12_against_integration():
+    from pathlib import Path
+    sol = solve(Path(__file__).resolve().parents[1] / "problems" / "pendulum.toml")
+    ev = sol.answers[0].evidence
+    assert ev.passed and abs(ev.order - 12) < 0.35, ev

@@ -94,4 +94,5 @@ def classify(problem: Problem) -> Finding:
         return Finding("slow", "slow drift: the coefficients change with t, so the expansion holds t·sin kt "
                        "terms from the drift itself; per-swing values are those of the first swing from t = 0 "
                        "and change from swing to swing", False)
-    return Finding("far", "time dependence away from resonance: bounded forced terms only", False)
+    return Finding("far", "time dependence away from resonance: bounded forced terms only; per-swing values are "
+                   "those of the first swing from t = 0 (the forcing's phase differs on later swings)", False)
