@@ -100,8 +100,8 @@ def fitted(problem: Problem, *, truth: Callable, answer: Callable, expected: flo
     hi = hi or problem.small_range[1]
     values = engine.geometric(lo, hi, problem.points)
     params = tuple((s.name, v) for s, v in sorted(problem.parameters.items(), key=lambda kv: kv[0].name))
-    desc = truth_desc or (f"the problem's own equation integrated by mpmath odefun at {problem.dps} digits "
-                          f"({what}), confirmed at {problem.dps + 15}")
+    desc = truth_desc or (f"the problem's own equation integrated by mpmath odefun at {problem.dps} digits, "
+                          f"confirmed at {problem.dps + 15}")
     return engine.order_check(param=problem.small.name, values=values, truth=truth, derived=answer,
                               expected=expected, band=band, truth_desc=desc, params=params,
                               dps=problem.dps, confirm_dps=problem.dps + 15, note=what)
