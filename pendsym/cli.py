@@ -37,7 +37,7 @@ def _parser(with_keys: bool = True) -> Parser:
     keys = ", ".join(registry.memoirs()) if with_keys else "see pendsym list --help"
     p = Parser(prog="pendsym", description="Rebuild and check the classical perturbation theory of the pendulum.",
                epilog="exit codes: 0 success, 1 a check failed, 2 bad input, 130 interrupted")
-    sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser, metavar="{list,derive,check,scene}")
+    sub = p.add_subparsers(dest="cmd", required=True, parser_class=Parser, metavar="{list,derive,check,scene,solve}")
     ls = sub.add_parser("list", help="the Results, with their status", epilog=f"memoir keys: {keys}")
     ls.add_argument("--memoir", help=f"a memoir key ({keys})")
     ls.add_argument("--json", action="store_true", help="JSON output")
@@ -56,7 +56,31 @@ def _parser(with_keys: bool = True) -> Parser:
     ck.add_argument("id")
     ck.add_argument("--level", choices=("quick", "full"), default="full")
     ck.add_argument("--json", action="store_true", help="the record as in generated/results.json")
+    sv = sub.add_parser("solve", help="solve and verify your own perturbation problem (TOML, docs/solve.md)")
+    sv.add_argument("file")
+    sv.add_argument("--no-verify", action="store_true", help="skip the verification by integration (said in the output)")
+    sv.add_argument("--emit", metavar="DIR", help="write answer.tex, answer.py and answer.c there (accuracy measured)")
     return p
+
+
+def cmd_solve(args) -> int:
+    from . import solve as solver        # SymPy-heavy: imported only for this command
+    try:
+        sol = solver.solve(solver.load(args.file), verify=not args.no_verify)
+    except solver.REFUSALS as exc:
+        raise UsageError(str(exc)) from None
+    print(sol.report())
+    if args.emit:
+        from .solve import answer
+        try:
+            rows = answer.emit(sol, Path(args.emit))
+        except (OSError, RuntimeError) as exc:
+            raise UsageError(f"cannot emit under {args.emit}: {getattr(exc, 'strerror', None) or exc}") from None
+        print(f"wrote answer.tex, answer.py, answer.c under {args.emit}/")
+        for row in rows:
+            print(f"  kernel {row['kernel']}({', '.join(row['args'])}): largest relative error against the formula "
+                  f"at 30 digits: Python {row['python']:.2g}, C {row['c']:.2g}")
+    return 1 if sol.verified is False else 0
 
 
 def cmd_list(args) -> int:
@@ -223,7 +247,8 @@ def main(argv=None) -> int:
             return 0
         asks_help = any(a in ("-h", "--help") for a in argv)
         args = _parser(with_keys=asks_help).parse_args(argv)
-        return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check, "scene": cmd_scene}[args.cmd](args)
+        return {"list": cmd_list, "derive": cmd_derive, "check": cmd_check, "scene": cmd_scene,
+                "solve": cmd_solve}[args.cmd](args)
     except (UsageError, registry.UnknownResult, scene.SceneError, stages.OutputError) as exc:
         print(f"pendsym: error: {exc}", file=sys.stderr)
         return 2

@@ -1,0 +1,132 @@
+"""First-order averaging: the slow flow of amplitude and phase.
+
+With θ = a cos kt + b sin kt and θ' = k(−a sin kt + b cos kt) (variation of constants),
+θ'' + k²θ + φ = 0 is exactly
+
+    a' = (φ/k) sin kt,      b' = −(φ/k) cos kt.
+
+The slow flow keeps the part of the right-hand sides that does not oscillate: written with
+exponentials, the terms e^{iwt} whose frequency w vanishes with the small parameter (w = 0 at
+exact resonance, w = O(ε) near it, which then stays in the slow flow as a slow phase).  A
+perturbation with abs or sign (dry friction, quadratic drag) is averaged in the polar form
+θ = r cos(kt + β):  r' = ⟨φ sin ψ⟩/k,  β' = ⟨φ cos ψ⟩/(kr), ψ = kt + β, the mean over ψ taken
+on quarter periods where every abs and sign argument keeps its sign.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath as mp
+import sympy as sp
+
+from .. import truth as model
+from .. import verify as engine
+from .problem import Problem
+from .secular import NEAR
+
+a_, b_ = sp.symbols("a b", real=True)
+r_, beta_ = sp.Symbol("r", positive=True), sp.Symbol("beta", real=True)
+psi_ = sp.Symbol("psi", real=True)
+
+
+class NotAveraged(ValueError):
+    """The perturbation could not be averaged (the reason is the message)."""
+
+
+@dataclass(frozen=True)
+class SlowFlow:
+    form: str                # "cartesian" (a, b) or "polar" (r, beta)
+    variables: tuple         # the two slow variables
+    rates: tuple             # their derivatives (may hold t near resonance)
+    theta: sp.Expr           # θ in terms of the slow variables and t
+    start: tuple             # their values at t = 0
+
+    def equations(self) -> list[str]:
+        return [f"{sp.sstr(v)}' = {sp.sstr(r)}" for v, r in zip(self.variables, self.rates)]
+
+
+def _slow_part(expr: sp.Expr, problem: Problem) -> sp.Expr:
+    """The terms of expr whose frequency vanishes, vanishes with ε, or is under NEAR·k (slow)."""
+    t, small = problem.t, problem.small
+    kval = abs(sp.N(problem.k.subs(problem.values())))
+    ex = sp.expand(sp.powsimp(sp.expand(expr.rewrite(sp.exp)), combine="exp"))
+    keep = sp.S.Zero
+    for term in sp.Add.make_args(ex):
+        w = sp.S.Zero
+        for fac in sp.Mul.make_args(term):
+            if fac.func == sp.exp and fac.has(t):
+                w += sp.expand(fac.args[0] / (sp.I * t))
+        if w.has(t):
+            raise NotAveraged("the time dependence is not a sum of oscillations e^{iwt}")
+        w0 = w.subs(problem.values()).subs(small, 0)
+        if w == 0 or sp.simplify(w0) == 0 or (w0.is_number and abs(sp.N(w0)) < NEAR * kval):
+            keep += term
+    return sp.simplify(sp.expand(keep.rewrite(sp.cos)))
+
+
+def _mean_piecewise(f: sp.Expr, psi: sp.Symbol, num: dict) -> sp.Expr:
+    """(1/2π)∫_0^{2π} f dψ, with abs and sign resolved on each quarter period (their signs probed
+    at the parameters' values ``num`` and r = 1; the integral stays symbolic)."""
+    total = sp.S.Zero
+    kinks = [a for a in f.atoms(sp.Abs, sp.sign)]
+    for j in range(4):
+        lo, hi = j * sp.pi / 2, (j + 1) * sp.pi / 2
+        piece = f
+        for atom in kinks:
+            arg = atom.args[0]
+            probe = [arg.subs(num).subs({psi: lo + (hi - lo) * s / 8}).subs(r_, 1) for s in range(1, 8)]
+            signs = {sp.sign(sp.N(p)) for p in probe}
+            signs.discard(0)
+            if len(signs) != 1 or not all(p.is_number for p in probe):
+                raise NotAveraged(f"the sign of {sp.sstr(arg)} is not constant on a quarter period")
+            s = signs.pop()
+            piece = piece.xreplace({atom: s * arg if atom.func == sp.Abs else s})
+        total += sp.integrate(sp.expand(piece), (psi, lo, hi))
+    return sp.simplify(total / (2 * sp.pi))
+
+
+def slow_flow(problem: Problem) -> SlowFlow:
+    """The averaged equations of the problem (first order in the small parameter)."""
+    t, k, phi = problem.t, problem.k, problem.phi
+    a0, b0 = problem.theta_i, problem.omega_i / k
+    kinks = {atom: sp.Dummy() for atom in phi.atoms(sp.Abs, sp.sign)}
+    try:
+        poly = sp.Poly(phi.xreplace(kinks), problem.theta, problem.dtheta)
+    except sp.PolynomialError:
+        poly = None
+    if poly is None or any(c.has(problem.theta, problem.dtheta) for c in poly.coeffs()):
+        raise NotAveraged("averaging is implemented for a perturbation polynomial in the variable and its "
+                          "velocity (abs and sign allowed when autonomous)")
+    if phi.has(sp.Abs, sp.sign):
+        if not problem.autonomous:
+            raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
+        on = phi.subs({problem.theta: r_ * sp.cos(psi_), problem.dtheta: -r_ * k * sp.sin(psi_)},
+                      simultaneous=True)
+        num = problem.values()
+        dr = _mean_piecewise(on * sp.sin(psi_) / k, psi_, num)
+        dbeta = _mean_piecewise(on * sp.cos(psi_) / (k * r_), psi_, num)
+        return SlowFlow("polar", (r_, beta_), (dr, dbeta), r_ * sp.cos(k * t + beta_),
+                        (sp.sqrt(a0**2 + b0**2), sp.atan2(-b0, a0)))
+    theta = a_ * sp.cos(k * t) + b_ * sp.sin(k * t)
+    on = phi.subs({problem.theta: theta, problem.dtheta: sp.diff(theta, t)}, simultaneous=True)
+    da = _slow_part(on * sp.sin(k * t) / k, problem)
+    db = _slow_part(-on * sp.cos(k * t) / k, problem)
+    return SlowFlow("cartesian", (a_, b_), (da, db), theta, (a0, b0))
+
+
+def integrate(problem: Problem, flow: SlowFlow, eps, times, dps: int) -> list:
+    """[(θ, θ')] of the averaged motion at the increasing ``times`` (the slow flow integrated by mpmath)."""
+    vals = problem.values()
+    sub = lambda e: e.subs(vals).subs(problem.small, sp.Rational(str(eps)))
+    f = [engine.lambdify_mp(sub(r), (problem.t, *flow.variables)) for r in flow.rates]
+    th = engine.lambdify_mp(sub(flow.theta), (problem.t, *flow.variables))
+    dth = engine.lambdify_mp(sub(sp.diff(flow.theta, problem.t)), (problem.t, *flow.variables))
+    with mp.workdps(dps):
+        y0 = [engine.value_at(sub(s), {}) for s in flow.start]
+    traj = model.integrate(lambda t, y: [f[0](t, *y), f[1](t, *y)], y0, dps=dps)
+    out = []
+    with mp.workdps(dps):
+        for s in times:
+            y = traj(s)
+            out.append((th(mp.mpf(s), *y), dth(mp.mpf(s), *y)))
+    return out
