@@ -45,6 +45,7 @@ report: $(STAMP) tex-tools
 
 bench: $(STAMP) bench-derive
 	$(BIN)/python -m pendsym.bench --out generated/bench
+	$(BIN)/python -m pendsym.solve.bench --out generated/bench
 
 # cold, no-op and one-section-changed derive, on a copy of the tree with a cache of its own
 bench-derive: $(STAMP)
