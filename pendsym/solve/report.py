@@ -34,6 +34,8 @@ def text(sol) -> str:
     for ans in sol.answers:
         lines.append(f"  {ans.name} = {sp.sstr(ans.expr)}")
         lines += _evidence(ans)
+        if sol.verified is not None and ans.evidence is None:
+            lines.append("    not checked on its own (only the answers followed by a check are verified)")
     if sol.verified is None:
         lines.append("NOT VERIFIED: --no-verify (verification skipped)")
     elif sol.verified:
