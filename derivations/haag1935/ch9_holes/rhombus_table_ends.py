@@ -7,7 +7,7 @@ import sympy as sp
 from pendsym import checks
 from pendsym.result import Spec
 
-from ..common import READ_VW, rid, src
+from ..common import rid, src
 from . import limits, rhombus_derivation as derivation, rhombus_printed as printed, rhombus_truth as truth
 from .rhombus_printed import READ_346_X, READ_OMEGA_W, READ_VK, READ_W0, READ_WK, READ_Y, READ_Y0
 
@@ -96,7 +96,7 @@ def specs() -> tuple[Spec, ...]:
         # ---------------------------------------------------------------- the hole vanishing
         *(Spec(rid(343 if name != "G2" else 346, f"{name}_no_hole"), f"{name} of the rhombus blade → uniform as k → 0",
                src("n°107–110 (limit k → 0)", None), {"v0": "v_0", "w0": "w_0", "wl": r"w_\lambda", "G2": "G_2"}[name],
-               lambda deps, name=name: limits.uniform(name), check=truth.uniform_limit(name),
+               lambda deps, name=name: limits.uniform(name), check=truth.uniform_limit(name), show_values=name == "G2",
                note="The formula is the inverted uniform blade (dsolve, cf. (313)); the truth the rhombus blade at k.")
           for name in ("v0", "w0", "wl", "G2")),
     )

@@ -6,8 +6,8 @@ import sympy as sp
 from pendsym import checks
 from pendsym.result import Spec
 
-from ..common import READ_VW, rid, src
-from . import rhombus_derivation as derivation, rhombus_printed as printed, rhombus_truth as truth
+from ..common import rid, src
+from . import rhombus_derivation as derivation, rhombus_printed as printed
 from .rhombus_printed import READ_EPS_337, READ_MIDDLE, READ_Y
 
 ENDS = (rid(343, "v0"), rid(343, "w0"), rid(343, "wl"))
