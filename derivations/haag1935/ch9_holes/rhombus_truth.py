@@ -14,7 +14,7 @@ from typing import Callable
 import mpmath as mp
 import sympy as sp
 
-from pendsym import blade, checks
+from pendsym import blade, checks, verify
 
 from ..common import TOL
 
@@ -81,7 +81,8 @@ def on_rhombus(name: str, with_ends: bool = False) -> checks.Values:
                          kind="quadrature")
 
 
-def uniform_limit(name: str, M0: str = "1/2", lam: str = "6/5") -> checks.Order:
+def uniform_limit(name: str, M0: str = "1/2", lam: str = "6/5", expected: float = 1.0,
+                  lo: str = "1e-5", hi: str = "1e-3") -> checks.Order:
     """The hole vanishing: |truth(k) − uniform formula| over k → 0 must be O(k) (the truth is the rhombus blade
     shot at k; the formula, the Result's derived form, the inverted uniform blade's value)."""
     def truth(p, dps):
@@ -89,8 +90,8 @@ def uniform_limit(name: str, M0: str = "1/2", lam: str = "6/5") -> checks.Order:
         return QUANTITIES[name](shot(M0, str(text), lam, dps))
 
     def at(expr, p):
-        from pendsym import verify
         env = environment(M0, "1", lam)
+        env["k"] = p
         return verify.value_at(expr, env)
-    return checks.Order(param="k", values=checks.Geometric("1e-5", "1e-3"), truth=truth, at=at, expected=1.0,
+    return checks.Order(param="k", values=checks.Geometric(lo, hi), truth=truth, at=at, expected=expected,
                         truth_desc=f"{name} of the {BLADE}, M0 = {M0}, λ = {lam}, k → 0")
