@@ -67,6 +67,13 @@ def carried() -> types.MappingProxyType:
     return types.MappingProxyType({name: sp.expand(value) for name, value in out.items()})
 
 
+def across_s1(name: str) -> sp.Expr:
+    """After (324): A'' or B'' in terms of A', B' (v, v' continuous at s_1)."""
+    _, middle, last = pieces()
+    sol = sp.solve(joined(middle, last, s1), [A2, B2], dict=True)[0]
+    return sp.expand(sol[{"A''": A2, "B''": B2}[name]])
+
+
 def blade_function(slope_top: sp.Expr, slope_bottom: sp.Expr) -> types.MappingProxyType:
     """A, B and the three pieces of the solution with f'(0) = slope_top, f'(λ) = slope_bottom (n°4)."""
     first, middle, last = pieces()
@@ -113,7 +120,7 @@ def end_value(which: str, end: str) -> sp.Expr:
     """(329), (332): v_0, v_λ, w_0, w_λ."""
     sol = v_solution() if which == "v" else w_solution()
     first, _, last = sol["pieces"]
-    return first.subs(s, 0) if end == "0" else last.subs(s, lam)
+    return sp.factor(sp.together(first.subs(s, 0) if end == "0" else last.subs(s, lam)))
 
 
 def concentric(expr: sp.Expr) -> sp.Expr:

@@ -9,7 +9,7 @@ import sympy as sp
 from pendsym.result import Reading
 
 from ..symbols import lam, omega
-from .rectangle_derivation import A, A1, B, B1, omega_p, p, s, s0, s1
+from .rectangle_derivation import A, A1, A2, B, B1, B2, omega_p, p, s, s0, s1
 
 D = sp.Symbol("D", real=True)
 Wp = omega_p
@@ -31,6 +31,18 @@ def piece_321():
 
 def piece_322():
     return A1 * sp.cos(Wp * (s - s0)) + B1 * sp.sin(Wp * (s - s0))
+
+
+def piece_324():
+    return A2 * sp.cos(omega * (s - s1)) + B2 * sp.sin(omega * (s - s1))
+
+
+def A2_of_A1():
+    return A1 * cp + B1 * sp_
+
+
+def B2_of_A1():
+    return Wp / omega * (-A1 * sp_ + B1 * cp)
 
 
 def A1_323():
