@@ -1,8 +1,9 @@
-"""Haag 1935, Théorie de la suspension élastique des pendules: chapter I (any M(s), eqs. (1)–(87))
-and chapter III, the uniform blade (eqs. (156)–(183))."""
+"""Haag 1935, Théorie de la suspension élastique des pendules: chapter I (any M(s), eqs. (1)–(87)),
+chapter III, the uniform blade (eqs. (156)–(183)), and chapter IX, blades with a hole (eqs. (321)–(346))."""
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
+from . import ch9_holes
 
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
@@ -12,9 +13,12 @@ CHAPTER_1 = (
     Section.of(ch1_launch, "Chapter I. Principal oscillation and launching (64)–(76)"),
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
-SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
+CHAPTER_3 = tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
+CHAPTER_9 = tuple(Section.of(module, title) for module, title in ch9_holes.sections())
+SECTIONS = CHAPTER_1 + CHAPTER_3 + CHAPTER_9
 _CH1 = {sec.module for sec in CHAPTER_1}
-_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):]}
+_CH3 = {sec.module for sec in CHAPTER_3}
+_CH9 = {sec.module for sec in CHAPTER_9}
 
 
 def _eqs(lo: int, hi: int, modules: set):
@@ -26,7 +30,8 @@ def _eqs(lo: int, hi: int, modules: set):
 MEMOIR = Memoir(
     key="haag1935",
     title=("J. Haag, Théorie de la suspension élastique des pendules (1935), chapter I: first approximation "
-           "for any M(s), eqs. (1)–(87); chapter III: the uniform blade, eqs. (156)–(183)"),
+           "for any M(s), eqs. (1)–(87); chapter III: the uniform blade, eqs. (156)–(183); chapter IX: blades with a hole, "
+           "eqs. (321)–(346)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), (
         ("Chapter I. The equations and the functions v, w for any M(s) (1)–(20)", _eqs(1, 20, _CH1)),
@@ -39,6 +44,8 @@ MEMOIR = Memoir(
         ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, _CH3)),
         ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
+        ("Chapter IX. The rectangular hole (321)–(333)", _eqs(321, 333, _CH9)),
+        ("Chapter IX. The rhombus hole (334)–(346)", _eqs(334, 346, _CH9)),
     )),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
