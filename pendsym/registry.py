@@ -9,6 +9,7 @@ scan is a pure function of the package names.
 from __future__ import annotations
 
 import difflib
+import re
 import importlib
 import os
 import pkgutil
@@ -28,13 +29,21 @@ class UnknownResult(KeyError):
 
     def __init__(self, name: str, known: Iterable[str] = ()):
         super().__init__(name)
-        self.near = tuple(difflib.get_close_matches(name, list(known), n=3, cutoff=0.6)) if known else ()
+        known = sorted(known)
+        # the ids that extend the name (with numbers read without their leading zeros: eq43 → eq043.*)
+        extending = [k for k in known if _unpadded(k).startswith(_unpadded(name) + ".")]
+        self.near = tuple(extending[:3]) or tuple(difflib.get_close_matches(name, known, n=3, cutoff=0.6))
         if not self.near and known:
-            self.near = tuple(sorted(k for k in known if k.startswith(name.rsplit(".", 1)[0] + "."))[:3])
+            self.near = tuple(k for k in known if k.startswith(name.rsplit(".", 1)[0] + "."))[:3]
 
     def __str__(self) -> str:  # one line, for the CLI
         hint = f" (nearest: {', '.join(self.near)})" if self.near else ""
         return f"unknown result id: {self.args[0]}{hint}"
+
+
+def _unpadded(name: str) -> str:
+    """The name with the leading zeros of its numbers dropped (eq043 → eq43)."""
+    return re.sub(r"(?<!\d)0+(?=\d)", "", name)
 
 
 def packages() -> tuple[str, ...]:

@@ -43,3 +43,9 @@ def test_ids_are_unique_and_name_their_memoir():
     specs = registry.all_specs()
     for sid, spec in specs.items():
         assert sid.startswith(spec.memoir + ".")
+
+
+def test_unknown_id_suggests_the_ids_it_abbreviates_before_lookalikes():
+    known = ["m.eq043.dT", "m.eq043.x", "m.eq343.a", "m.eq430.b"]
+    assert registry.UnknownResult("m.eq43", known).near == ("m.eq043.dT", "m.eq043.x")
+    assert registry.UnknownResult("m.eq343", known).near == ("m.eq343.a",)
