@@ -2,7 +2,7 @@
 and chapter III, the uniform blade (eqs. (156)–(183))."""
 from pendsym.memoir import Memoir, Section, headings_by
 
-from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
+from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform, ch6_short_blade
 
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
@@ -11,9 +11,12 @@ CHAPTER_1 = (
     Section.of(ch1_launch, "Chapter I. Principal oscillation and launching (64)–(76)"),
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
-SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
+CHAPTER_3 = tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
+CHAPTER_6 = tuple(Section.of(module, title) for module, title in ch6_short_blade.sections())
+SECTIONS = CHAPTER_1 + CHAPTER_3 + CHAPTER_6
 _CH1 = {sec.module for sec in CHAPTER_1}
-_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):]}
+_CH3 = {sec.module for sec in CHAPTER_3}
+_CH6 = {sec.module for sec in CHAPTER_6}
 
 
 def _eqs(lo: int, hi: int, modules: set):
@@ -38,6 +41,9 @@ MEMOIR = Memoir(
         ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, _CH3)),
         ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
+        ("Chapter VI. The short blade: foci, period, Δl, Q (212)–(221)", _eqs(212, 221, _CH6)),
+        ("Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion (224)–(240)",
+         _eqs(224, 240, _CH6)),
     )),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared

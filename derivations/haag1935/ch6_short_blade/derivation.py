@@ -1,0 +1,214 @@
+"""Haag 1935, chapter VI, n°68–77: the short blade, derived step by step from chapters I and III.
+
+Each function takes the built dependencies (``deps``, by id) and returns a SymPy
+expression: the series in λ/a of a result of chapter I (any M(s)) or of chapter III
+(the uniform blade), by :mod:`.expansion`.  Nothing here is typed in from chapter VI.
+Where Haag "neglects R² before a²", R is set to 0 (l = a) in the expanded form.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from ..common import rid
+from ..symbols import (G_2, K, R, U, U1, U2, a, beta1, beta1_positive, g, k, lam, u, v0, vl, w0, wl, z, zp)
+from ..symbols import Fn, Gn, x_fork
+from .expansion import F_2, l, leading, root_series, truncated
+
+L_OF_A = a + R**2 / a          # (213)
+
+
+def d(deps, eq: int, name: str) -> sp.Expr:
+    return deps[rid(eq, name)].derived
+
+
+# ---------------------------------------------------------------- n°68: (212)–(215)
+def length_213(deps=None) -> sp.Expr:
+    """(213): l = a + R²/a, the length of the synchronous pendulum about A (definition)."""
+    return L_OF_A
+
+
+def rhs_212(deps) -> sp.Expr:
+    """(212): (30) rewritten as (z + a)(z − R²/a) = right member; the right member is
+    (z + a)(z − R²/a) − [the monic quadratic (30)] (an exact rewriting)."""
+    quadratic = d(deps, 30, "quadratic")
+    return sp.factor(sp.expand((z + a) * (z - R**2 / a) - quadratic), z)
+
+
+def reduced_212(deps) -> sp.Expr:
+    """Right member of (212) over z, to the first order in λ/a ("d'après (18)")."""
+    return truncated(sp.cancel(d(deps, 212, "rhs") / z), 1)
+
+
+def z_214(deps) -> sp.Expr:
+    """(214): the root z → R²/a of (30), to the first order in λ/a."""
+    return root_series(d(deps, 30, "quadratic"), z, R**2 / a, 1)
+
+
+def zp_215(deps) -> sp.Expr:
+    """(215): the root z' → −a of (30), to the first order in λ/a."""
+    return root_series(d(deps, 30, "quadratic").subs(z, zp), zp, -a, 1)
+
+
+# ---------------------------------------------------------------- n°69: (216)–(220)
+def K_216(deps) -> sp.Expr:
+    """(216): K of (36) with z of (214), to the first order in λ/a."""
+    return truncated(d(deps, 36, "K").subs(z, d(deps, 214, "z")), 1)
+
+
+def n2_217(deps) -> sp.Expr:
+    """(217): n² = −Kg/z' (34) with K of (216) and z' of (215), to the first order in λ/a."""
+    return truncated(-d(deps, 216, "K") * g / d(deps, 215, "zp"), 1)
+
+
+def dl_218(deps) -> sp.Expr:
+    """(218): Δl = g/n² − l, n² of (217), to the first order in λ/a."""
+    return truncated(g / d(deps, 217, "n2") - L_OF_A, 1)
+
+
+def dl_219(deps) -> sp.Expr:
+    """(219): (218) with R = 0 (l = a), β1 by (22) and w_λ = w_0 − v_λ by (16)."""
+    expr = d(deps, 218, "dl").subs(R, 0)
+    expr = expr.subs(beta1, d(deps, 22, "beta1"))
+    expr = expr.subs(wl, sp.solve(sp.Eq(w0, d(deps, 16, "w0")), wl)[0])
+    return sp.expand(expr)
+
+
+def dl_220(deps) -> sp.Expr:
+    """(220): (219) for the uniform blade, v_0 and w_0 of (159)."""
+    expr = d(deps, 219, "dl").subs({v0: d(deps, 159, "v0"), w0: d(deps, 159, "w0")})
+    return sp.simplify(expr)
+
+
+def u_root_220(deps) -> sp.Expr:
+    """n°69: the u where Δl of (220) vanishes (sign change; mpmath findroot from u = 1)."""
+    ratio = sp.simplify(d(deps, 220, "dl") / lam)
+    return sp.nsolve(ratio, u, 1, prec=40)
+
+
+# ---------------------------------------------------------------- n°71: (224)–(226)
+def swap_foci(expr: sp.Expr) -> sp.Expr:
+    """z ↔ z' (the parasitic vibration: its focus is F, n°8)."""
+    return expr.subs({z: zp, zp: z}, simultaneous=True)
+
+
+def Kp_224(deps) -> sp.Expr:
+    """(224): K' = (35) with z ↔ z', z of (214): its leading term in λ/a."""
+    return leading(swap_foci(d(deps, 35, "K")).subs(z, d(deps, 214, "z")))
+
+
+def np2_225(deps) -> sp.Expr:
+    """(225): n'² = −K'g/z ((34) with z ↔ z'), K' of (224), z of (214): the leading term."""
+    return leading(-d(deps, 224, "Kp") * g / d(deps, 214, "z"))
+
+
+def ratio_226(deps) -> sp.Expr:
+    """(226): n'/n = √(n'²/n²), n'² of (225), n² of (217): the leading term (β1 > 0 (17))."""
+    expr = leading(d(deps, 225, "np2") / d(deps, 217, "n2"))
+    return sp.sqrt(expr.subs(beta1, beta1_positive)).subs(beta1_positive, beta1)
+
+
+def bound_226(deps) -> sp.Expr:
+    """(226): n'/n − (l/R)√(a/λ), which the memoir says positive (β1 < λ)."""
+    return d(deps, 226, "ratio") - L_OF_A / R * sp.sqrt(a / lam)
+
+
+# ---------------------------------------------------------------- n°76: (235)–(236)
+def S_235(deps) -> sp.Expr:
+    """(235): the suppleness (82) S = (a + w_λ + K²β1)/G_2 − 1, its leading term in λ/a."""
+    return leading(d(deps, 82, "S").subs(Gn(2), G_2))
+
+
+def G2_uniform(deps) -> sp.Expr:
+    """G_2 = λΓ_2 ((163) with n = 2) of the uniform blade, Γ_2 of (166) at K = 1 (k = 0)."""
+    return lam * d(deps, 166, "Gamma2").subs({k: 0, K: 1})
+
+
+def S_uniform_235(deps) -> sp.Expr:
+    """(235), second and third forms: S = a/G_2 with G_2 of the uniform blade at K = 1."""
+    return sp.simplify(d(deps, 235, "S").subs(G_2, G2_uniform(deps)).rewrite(sp.exp))
+
+
+def u_factor_235(deps) -> sp.Expr:
+    """(235): S·λ/(2a), the factor of the uniform blade's suppleness that depends only on u."""
+    return sp.simplify(d(deps, 235, "S_uniform") * lam / (2 * a))
+
+
+def factor_236(deps) -> sp.Expr:
+    """(236): S for a given u, over its value (2a/λ)·u: the factor that depends only on u."""
+    return sp.simplify(d(deps, 235, "S_uniform") * lam / (2 * a * u))
+
+
+def value_236(deps) -> sp.Expr:
+    """n°76: the factor (236) at u = 4."""
+    return sp.N(d(deps, 236, "factor").subs(u, 4), 40)
+
+
+def growing(expr_deps_id: tuple[int, str]):
+    """d/du of a Result (its derived form): positive if the function increases (n°76)."""
+    def derive(deps):
+        return sp.simplify(sp.diff(d(deps, *expr_deps_id), u))
+    return derive
+
+
+# ---------------------------------------------------------------- n°77: (237)–(240)
+def OFp_237_l(deps) -> sp.Expr:
+    """n°77: OF' of (83) with z' of (215)."""
+    return sp.expand(d(deps, 83, "OFp").subs(zp, d(deps, 215, "zp")))
+
+
+def OFp_237(deps) -> sp.Expr:
+    """(237): the same with l = a (R = 0) and β1 of (22)."""
+    return sp.expand(d(deps, 237, "OFp_l").subs(R, 0).subs(beta1, d(deps, 22, "beta1")))
+
+
+def x_238_root(deps) -> sp.Expr:
+    """(238), first form: the small root of (87) in x (F_2, x and a + z' of the order of λ, L of the
+    order of a), to the first order in λ/L."""
+    shift = sp.Symbol("a+z'", real=True)
+    equation = d(deps, 87, "optimum").subs(Fn(2), F_2).subs(zp, shift - a)
+    return root_series(equation, x_fork, 0, 1, extra=(shift,)).subs(shift, a + zp)
+
+
+def x_238(deps) -> sp.Expr:
+    """(238), second form: the first form with z' of (215)."""
+    return sp.expand(d(deps, 238, "x_root").subs(zp, d(deps, 215, "zp")))
+
+
+def F2_239(deps) -> sp.Expr:
+    """(239): F_2/λ of (169) at K = 1."""
+    return sp.simplify(d(deps, 169, "F2").subs(K, 1))
+
+
+def x_240(deps) -> sp.Expr:
+    """n°77: x of (238) for the uniform blade with R = 0 (l = a): F_2 of (239), v_λ, β1 of (159)."""
+    expr = d(deps, 238, "x").subs(R, 0).subs(F_2, lam * d(deps, 239, "F2"))
+    return sp.simplify(expr.subs({vl: d(deps, 159, "vl"), beta1: d(deps, 159, "beta1")}))
+
+
+def c_240(deps) -> sp.Expr:
+    """(240): c = λ − x."""
+    return sp.simplify(lam - d(deps, 240, "x"))
+
+
+def thin_limit(eq: int, name: str):
+    """n°77, u > 4: the leading term of a Result as u → ∞ (th(u/2) → 1, 1/sh u → 0)."""
+    def derive(deps):
+        expr = d(deps, eq, name).rewrite(sp.exp)
+        q = sp.Symbol("q", positive=True)            # q = e^{−u}
+        expr = sp.simplify(expr.subs(sp.exp(-u), q).subs(sp.exp(u), 1 / q))
+        return sp.simplify(sp.series(expr, q, 0, 1).removeO())
+    return derive
+
+
+# ---------------------------------------------------------------- n°70: (221)
+def Q_221(deps) -> sp.Expr:
+    """(221): Q = K(z − z') (45) with K, z, z' of (216), (214), (215), to the first order in λ/a,
+    with R = 0."""
+    expr = d(deps, 45, "Q").subs({K: d(deps, 216, "K"), z: d(deps, 214, "z"), zp: d(deps, 215, "zp")})
+    return sp.expand(truncated(expr, 1).subs(R, 0))
+
+
+def Q_221_ends(deps) -> sp.Expr:
+    """(221), second form: β1 by (22), w_λ = w_0 − v_λ by (16)."""
+    expr = d(deps, 221, "Q").subs(beta1, d(deps, 22, "beta1"))
+    return sp.expand(expr.subs(wl, sp.solve(sp.Eq(w0, d(deps, 16, "w0")), wl)[0]))

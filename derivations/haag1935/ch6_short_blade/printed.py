@@ -1,0 +1,148 @@
+"""Haag 1935, chapter VI, n°68–77: the formulas as printed (seed 001, lines ~1835–2060), with their readings.
+
+The OCR writes Haag's v, w as ν, ω (:data:`..common.READ_VW`); U, U1, U2 are th(u/2), 1/sh u,
+1/th u (160), applied with :data:`..symbols.DEFS`; l = a + R²/a (213) is applied as a
+definition before the comparison.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from pendsym.result import Reading
+
+from ..symbols import DEFS, G_2, R, U, U1, U2, a, beta1, g, lam, u, v0, vl, w0, wl, z, zp
+from .expansion import F_2, l
+
+L_DEFINITION = ((l, a + R**2 / a),)
+DEFINITIONS = L_DEFINITION + DEFS
+
+READ_V2 = Reading("−F_2 − 2v_2 + 2(a/l)β1", "v_λ: the OCR reads the index λ as 2 (a + z' = v_λ − (a/l)β1 by (215))")
+READ_OMEGA_LAMBDA = Reading("ω_λ (217), (218)", "w_λ: the OCR renders w as ω")
+
+
+def rhs_212():
+    return z * (-a * beta1 + l * vl - (beta1 * wl + vl**2)) / (a - vl)
+
+
+def length_213():
+    return a + R**2 / a
+
+
+def reduced_212():
+    return -beta1 + l / a * vl
+
+
+def z_214():
+    return R**2 / a - R**2 / (a**2 + R**2) * (beta1 - l / a * vl)
+
+
+def zp_215():
+    return -a + (vl - a / l * beta1)
+
+
+def K_216():
+    return a / l * (1 + wl / a + vl / l + R**2 / (a * l) * (beta1 / l - vl / a))
+
+
+def n2_217():
+    return g / l * (1 + wl / a + 2 * vl / l - beta1 * a / l**2)
+
+
+def dl_218():
+    return -l / a * wl - 2 * vl + beta1 * a / l
+
+
+def dl_219():
+    return lam - v0 - w0
+
+
+def dl_220():
+    return lam * (1 - U2 / u)
+
+
+def u_root_220():
+    return sp.Rational(6, 5)
+
+
+def Q_221():
+    return a + wl + beta1
+
+
+def Q_221_ends():
+    return a + lam + w0 - v0
+
+
+def Kp_224():
+    return -l / beta1
+
+
+def np2_225():
+    return g * a * l / (beta1 * R**2)
+
+
+def ratio_226():
+    return l / R * sp.sqrt(a / beta1)
+
+
+def bound_226():
+    return l / R * sp.sqrt(a / beta1) - l / R * sp.sqrt(a / lam)
+
+
+def S_235():
+    return a / G_2
+
+
+def S_uniform_235():
+    return 2 * a / (lam * (U1**2 + U2 / u))
+
+
+def S_sh_235():
+    return 2 * a / lam * u * sp.sinh(u) ** 2 / (u + sp.sinh(u) * sp.cosh(u))
+
+
+def u_factor_235():
+    return u * sp.sinh(u) ** 2 / (u + sp.sinh(u) * sp.cosh(u))
+
+
+def factor_236():
+    return sp.sinh(u) ** 2 / (u + sp.sinh(u) * sp.cosh(u))
+
+
+def value_236():
+    return sp.Rational(993, 1000)
+
+
+def OFp_237_l():
+    return lam + vl - a / l * beta1
+
+
+def OFp_237():
+    return v0
+
+
+def x_238_root():
+    return -F_2 - 2 * (a + zp)
+
+
+def x_238():
+    return -F_2 - 2 * vl + 2 * a / l * beta1
+
+
+def F2_239():
+    return 1 - 2 * U / u + U2 / (2 * u) - U1**2 / 2
+
+
+def x_240():
+    return lam * (1 - U2 / (2 * u) + U1**2 / 2)
+
+
+def c_240():
+    return lam / 2 * (U2 / u - U1**2)
+
+
+def c_thin_240():
+    return lam / (2 * u)
+
+
+def OFp_thin_237():
+    return lam / u
