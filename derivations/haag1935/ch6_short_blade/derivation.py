@@ -102,9 +102,10 @@ def np2_225(deps) -> sp.Expr:
 
 
 def ratio_226(deps) -> sp.Expr:
-    """(226): n'/n = √(n'²/n²), n'² of (225), n² of (217): the leading term (β1 > 0 (17))."""
+    """(226): n'/n = √(n'²/n²), n'² of (225), n² of (217): the leading term (β1 > 0 (17), so that the
+    square root splits)."""
     expr = leading(d(deps, 225, "np2") / d(deps, 217, "n2"))
-    return sp.sqrt(expr.subs(beta1, beta1_positive)).subs(beta1_positive, beta1)
+    return sp.sqrt(expr.subs(beta1, beta1_positive))
 
 
 def bound_226(deps) -> sp.Expr:

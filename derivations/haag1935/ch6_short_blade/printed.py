@@ -10,7 +10,7 @@ import sympy as sp
 
 from pendsym.result import Reading
 
-from ..symbols import DEFS, G_2, R, U, U1, U2, a, beta1, g, lam, u, v0, vl, w0, wl, z, zp
+from ..symbols import DEFS, G_2, R, U, U1, U2, a, beta1, beta1_positive, g, lam, u, v0, vl, w0, wl, z, zp
 from .expansion import F_2, l
 
 L_DEFINITION = ((l, a + R**2 / a),)
@@ -81,11 +81,11 @@ def np2_225():
 
 
 def ratio_226():
-    return l / R * sp.sqrt(a / beta1)
+    return l / R * sp.sqrt(a / beta1_positive)
 
 
 def bound_226():
-    return l / R * sp.sqrt(a / beta1) - l / R * sp.sqrt(a / lam)
+    return l / R * sp.sqrt(a / beta1_positive) - l / R * sp.sqrt(a / lam)
 
 
 def S_235():
