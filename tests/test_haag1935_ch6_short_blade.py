@@ -1,0 +1,113 @@
+"""Haag 1935, chapter VI (the short blade): expansion, derivation, printed forms and the eigenproblem truth."""
+import dataclasses
+
+import mpmath as mp
+import pytest
+import sympy as sp
+
+from derivations.haag1935 import ch6_short_blade
+from derivations.haag1935.ch6_short_blade import expansion, printed, truth
+from derivations.haag1935.common import rid
+from derivations.haag1935.symbols import DEFS, R, a, lam, u, v0, vl, w0, z
+from pendsym import checks, registry
+from pendsym.result import Result
+
+L_OF_A = ((expansion.l, a + R**2 / a),)
+
+
+@pytest.fixture(scope="module")
+def built():
+    return registry.build([spec.id for spec in ch6_short_blade.specs()])
+
+
+# ---------------------------------------------------------------- expansion
+def test_root_series_of_a_known_quadratic():
+    """(z − 1)(z + 2) + δ·λz = 0: the root near 1 is 1 − λ/3 to the first order."""
+    root = expansion.root_series((z - 1) * (z + 2) + lam * z, z, 1, 1)
+    assert sp.simplify(root - (1 - lam / 3)) == 0
+
+
+def test_root_series_refuses_a_non_root():
+    with pytest.raises(ValueError):
+        expansion.root_series((z - 1) * (z + 2) + lam * z, z, 3, 1)
+
+
+def test_truncated_keeps_the_first_order_only():
+    assert expansion.truncated(a / (a - vl), 1) == 1 + vl / a
+    assert expansion.leading(a / (a - vl)) == 1
+
+
+# ---------------------------------------------------------------- printed ≡ derived
+@pytest.mark.parametrize("eq, name", [(212, "rhs"), (212, "reduced"), (214, "z"), (215, "zp"), (216, "K"),
+                                      (217, "n2"), (218, "dl"), (224, "Kp"), (225, "np2"), (237, "OFp_l"),
+                                      (238, "x")])
+def test_series_forms_equal_the_printed_ones(built, eq, name):
+    result = built[rid(eq, name)]
+    assert sp.simplify(result.derived - result.spec.printed().subs(L_OF_A)) == 0
+
+
+def test_length_correction_of_ordinary_pendulums(built):
+    """(219) is λ − v_0 − w_0, and (220) equals λ(1 − coth u/u)."""
+    assert sp.expand(built[rid(219, "dl")].derived - (lam - v0 - w0)) == 0
+    difference = built[rid(220, "dl")].derived - lam * (1 - sp.coth(u) / u)
+    assert sp.simplify(difference.rewrite(sp.exp)) == 0
+
+
+def test_zero_of_the_length_correction_is_rounded_in_the_text(built):
+    """u th u = 1 at 1.19968 (mpmath, independent of the derivation): "1,2 environ" is it to one decimal."""
+    root = mp.findroot(lambda x: x * mp.tanh(x) - 1, 1.2)
+    derived = built[rid(220, "u_root")].derived
+    assert abs(float(derived) - float(root)) < 1e-25
+    assert round(float(derived), 1) == 1.2 and derived != printed.u_root_220()
+
+
+def test_value_at_u_4_is_truncated_in_the_text(built):
+    """sh²4/(4 + sh 4 ch 4) = 0.99399…: the printed 0,993 is truncated (rounded would be 0,994)."""
+    value = float(built[rid(236, "value")].derived)
+    exact = float(mp.sinh(4) ** 2 / (4 + mp.sinh(4) * mp.cosh(4)))
+    assert abs(value - exact) < 1e-15
+    assert int(value * 1000) / 1000 == 0.993 and round(value, 3) == 0.994
+
+
+def test_thin_blade_limits(built):
+    assert sp.simplify(built[rid(240, "c_thin")].derived - lam / (2 * u)) == 0
+    assert sp.simplify(built[rid(237, "OFp_thin")].derived - lam / u) == 0
+
+
+def test_uniform_forms_match_under_the_definitions(built):
+    for eq, name in ((239, "F2"), (240, "x"), (240, "c"), (235, "S_uniform")):
+        result = built[rid(eq, name)]
+        difference = (result.derived - result.spec.printed()).subs(dict(DEFS)).subs(L_OF_A)
+        assert abs(sp.N(difference.subs({u: sp.Rational(7, 3), lam: sp.Rational(1, 10), a: 2}), 30)) < 1e-25
+
+
+# ---------------------------------------------------------------- the truth
+def test_modes_of_the_short_pendulum_approach_the_rigid_one():
+    """As λ/a → 0 the principal n² tends to g/l and the upper focus to A (z' → −a)."""
+    env = truth.state("tapered", truth.RATIO, "1e-4", 30)
+    assert abs(env["n^2"] * env["l"] / env["g"] - 1) < 1e-3
+    assert abs(env["z'"] / env["a"] + 1) < 1e-3
+
+
+@pytest.mark.slow
+def test_order_checks_pass_for_the_derived_forms(built):
+    for eq, name in ((214, "z"), (217, "n2"), (219, "dl"), (225, "np2")):
+        result = built[rid(eq, name)]
+        assert checks.run(result.spec.check, result, "quick").passed, (eq, name)
+
+
+@pytest.mark.slow
+def test_order_check_fails_without_the_first_order_term(built):
+    """z = R²/a alone (the rigid pendulum's focus) misses the O(λ/a) term: its residual is of the first order."""
+    result = built[rid(214, "z")]
+    wrong = Result(result.spec, R**2 / a, None)
+    evidence = checks.run(result.spec.check, wrong, "quick")
+    assert not evidence.passed and abs(evidence.order - 1) < 0.3
+
+
+@pytest.mark.slow
+def test_length_correction_fails_with_a_sign_error(built):
+    """Δl = λ + v_0 − w_0 (a wrong sign) does not converge to the truth: its residual is of order 0."""
+    result = built[rid(219, "dl")]
+    wrong = dataclasses.replace(Result(result.spec, lam + v0 - w0, None))
+    assert not checks.run(result.spec.check, wrong, "quick").passed
