@@ -10,9 +10,9 @@ from __future__ import annotations
 import sympy as sp
 
 from ..common import rid
-from ..symbols import (G_2, K, R, U, U1, U2, a, beta1, beta1_positive, g, k, lam, u, v0, vl, w0, wl, z, zp)
+from ..symbols import G_2, K, R, a, beta1, beta1_positive, g, k, lam, u, v0, vl, w0, wl, z, zp
 from ..symbols import Fn, Gn, x_fork
-from .expansion import F_2, l, leading, root_series, truncated
+from .expansion import F_2, leading, root_series, truncated
 
 L_OF_A = a + R**2 / a          # (213)
 

@@ -55,8 +55,3 @@ def root_series(equation: sp.Expr, var: sp.Symbol, start: sp.Expr, order: int = 
         solved[c] = sp.simplify(sp.solve(term, c)[0])
     return sp.expand(trial.subs(solved).subs(DELTA, 1))
 
-
-def with_l(expr: sp.Expr) -> sp.Expr:
-    """expr with a² + R² written a·l where it appears (l = a + R²/a (213)): for display only."""
-    from ..symbols import R, a
-    return sp.simplify(expr.subs(R**2, a * l - a**2))

@@ -8,7 +8,7 @@ from pendsym.result import Spec
 from ..ch1_shape.printed import eq87 as optimum_87
 from ..common import READ_VW, rid, src
 from . import derivation, printed, truth
-from .printed import DEFINITIONS, L_DEFINITION
+from .printed import DEFINITIONS
 
 FORK = "x = λ − c, the root of smaller modulus of (87) (verified in n°25 against the fork's glide) with z', K of the modes"
 
