@@ -41,7 +41,7 @@ MEMOIR = Memoir(
         ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, _CH3)),
         ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
-        ("Chapter VI. The short blade: foci, period, Δl, Q (212)–(221)", _eqs(212, 221, _CH6)),
+        ("Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)", _eqs(212, 223, _CH6)),
         ("Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion (224)–(240)",
          _eqs(224, 240, _CH6)),
     )),

@@ -21,7 +21,7 @@ from pendsym.result import Spec
 from . import table_foci_period, table_vibration_flexion
 
 SECTIONS: tuple[tuple[ModuleType, str], ...] = (
-    (table_foci_period, "Chapter VI. The short blade: foci, period, Δl, Q (212)–(221)"),
+    (table_foci_period, "Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)"),
     (table_vibration_flexion, "Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion "
                               "(224)–(240)"),
 )

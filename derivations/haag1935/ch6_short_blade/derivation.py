@@ -213,3 +213,51 @@ def Q_221_ends(deps) -> sp.Expr:
     """(221), second form: β1 by (22), w_λ = w_0 − v_λ by (16)."""
     expr = d(deps, 221, "Q").subs(beta1, d(deps, 22, "beta1"))
     return sp.expand(expr.subs(wl, sp.solve(sp.Eq(w0, d(deps, 16, "w0")), wl)[0]))
+
+
+# ---------------------------------------------------------------- n°70: (222)–(223)
+def dT_222(deps) -> sp.Expr:
+    """(222): dT/T per degree (60) with K of (216), to the first order in λ/a (M_λ of the order of λ²,
+    G_2 of λ), with R = 0; β1 by (22), w_λ = w_0 − v_λ by (16)."""
+    expr = d(deps, 60, "dT").subs(K, d(deps, 216, "K"))
+    expr = truncated(expr, 1).subs(R, 0)
+    expr = expr.subs(beta1, d(deps, 22, "beta1"))
+    return sp.expand(expr.subs(wl, sp.solve(sp.Eq(w0, d(deps, 16, "w0")), wl)[0]))
+
+
+def dT_223(deps) -> sp.Expr:
+    """(223): (222) for the uniform blade: v_0, w_0 of (159), M_λ = λ²/u² (156), G_2 = λΓ_2 at K = 1 (166)."""
+    from ..symbols import M_lambda
+    expr = d(deps, 222, "dT").subs({v0: d(deps, 159, "v0"), w0: d(deps, 159, "w0"), M_lambda: lam**2 / u**2,
+                                    G_2: G2_uniform(deps)})
+    return sp.expand(expr)
+
+
+# ---------------------------------------------------------------- n°71: (227)–(228)
+def focal_ratio() -> sp.Expr:
+    """FB̄/F'B̄ = (b − a − z)/(b − a − z'): the foci at AF = a + z, AF' = a + z' (n°7), B at AB = b."""
+    from ..symbols import b
+    return (b - a - z) / (b - a - zp)
+
+
+def amplitude_ratio(eq: int):
+    """A'/A = 1/(A/A') of (69) (eq = 69, static release) or (73) (eq = 73, blow), a1 = −w_λ (41), with the
+    factor FB̄/F'B̄ kept and the rest (free of b) at its leading order in λ/a, z, z' of (214), (215)."""
+    def derive(deps):
+        rest = sp.simplify(1 / d(deps, eq, "ratio") / focal_ratio())
+        rest = rest.subs(a1_symbol(), d(deps, 41, "a1")).subs({z: d(deps, 214, "z"), zp: d(deps, 215, "zp")},
+                                                               simultaneous=True)
+        rest = leading(rest)
+        return focal_ratio() * (rest.subs(beta1, beta1_positive) if rest.has(sp.sqrt(beta1)) else rest)
+    return derive
+
+
+def a1_symbol():
+    from ..symbols import a1
+    return a1
+
+
+def ratio_228_227(deps) -> sp.Expr:
+    """n°71: (228) over (227)."""
+    ratio = d(deps, 228, "ratio") / d(deps, 227, "ratio")
+    return sp.simplify(ratio.subs(beta1, beta1_positive))

@@ -11,13 +11,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..symbols import G_2, M_lambda, beta1, lam, v0, vl, w0, wl
+from ..symbols import G_2, M_lambda, beta1, beta1_positive, lam, v0, vl, w0, wl
 
 DELTA = sp.Symbol("delta", positive=True)     # order of λ/a (bookkeeping; set to 1 at the end)
 l = sp.Symbol("l", positive=True)              # the length of the synchronous pendulum (213)
 F_2 = sp.Symbol("F_2", real=True)              # F_2 of (79) for the principal oscillation (a length)
 
-BLADE_LENGTHS = (lam, v0, vl, w0, wl, beta1, G_2, F_2)
+BLADE_LENGTHS = (lam, v0, vl, w0, wl, beta1, beta1_positive, G_2, F_2)
 BLADE_SQUARES = (M_lambda,)
 
 
@@ -35,9 +35,15 @@ def truncated(expr: sp.Expr, order: int = 1) -> sp.Expr:
     return sp.expand(series).subs(DELTA, 1)
 
 
-def leading(expr: sp.Expr) -> sp.Expr:
-    """The leading term of expr in λ/a, at δ = 1."""
-    return sp.simplify(scaled(expr).as_leading_term(DELTA).subs(DELTA, 1))
+def leading(expr: sp.Expr, extra: tuple = ()) -> sp.Expr:
+    """The leading term of expr in λ/a, at δ = 1: its power p of δ from SymPy's leading term, its
+    coefficient as the limit of expr/δ^p as δ → 0 (exact)."""
+    expr = scaled(expr, extra)
+    _, power = expr.as_leading_term(DELTA).as_coeff_exponent(DELTA)
+    coefficient = sp.limit(expr / DELTA**power, DELTA, 0)
+    if coefficient == 0 or coefficient.has(sp.oo, -sp.oo, sp.zoo, sp.nan):
+        raise ValueError(f"no leading term of order {power} for {expr}")
+    return sp.factor(sp.simplify(coefficient))
 
 
 def root_series(equation: sp.Expr, var: sp.Symbol, start: sp.Expr, order: int = 1, extra: tuple = ()) -> sp.Expr:

@@ -146,3 +146,42 @@ def c_thin_240():
 
 def OFp_thin_237():
     return lam / u
+
+
+# ---------------------------------------------------------------- n°70–71 (temperature, launches)
+def dT_222():
+    from ..symbols import G_2, M_lambda, alpha_blade, alpha_rod, beta_t
+    return (alpha_rod * (1 - (lam - w0 - v0) / a) + alpha_blade * lam / a * (1 + w0**2 / M_lambda - 4 * G_2 / lam)
+            - beta_t * G_2 / a)
+
+
+def dT_223():
+    from ..symbols import alpha_blade, alpha_rod, beta_t
+    return alpha_rod / 2 + lam / (2 * a) * (-alpha_rod * (1 - U2 / u) + alpha_blade * (1 - U1**2 - 2 * U2 / u)
+                                            - beta_t / 2 * (U1 + U2 / u))
+
+
+def focal_ratio():
+    from ..symbols import b
+    return (b - a - z) / (b - a - zp)
+
+
+def ratio_227():
+    return -focal_ratio() * a * beta1 / l**2
+
+
+def ratio_228():
+    return -focal_ratio() * a**2 / (l * R) * sp.sqrt(beta1_positive / a)
+
+
+def ratio_228_227():
+    return l / R * sp.sqrt(a / beta1_positive)
+
+
+READ_BETA_T = Reading("β (thermo-elastic coefficient)", "β_t, not the ordinate β of A")
+READ_222 = Reading("dT/T = α'(1 − …) + α(λ/a)(…) − βG_2/a", "transcribed as shown: the derivation from (60) gives "
+                   "half of it (the leading term α'/2, as (223) prints); a ½ (or a 2 on the left) may be lost in "
+                   "the OCR", certain=False)
+READ_223 = Reading("−(β/2)(U_1 + U_2/u)", "transcribed as shown: G_2 = λ(U_1² + U_2/u)/2 (235) gives U_1²; the "
+                   "exponent may be lost in the OCR", certain=False)
+READ_BARS = Reading("FB̄/F'B̄ (overlined)", "algebraic distances: FB̄ = b − a − z, F'B̄ = b − a − z'")

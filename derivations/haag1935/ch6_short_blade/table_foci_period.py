@@ -1,4 +1,4 @@
-"""Haag 1935, chapter VI, n°68–70: the foci, the period, Δl and Q of the short blade, (212)–(221)."""
+"""Haag 1935, chapter VI, n°68–70: the foci, the period, Δl, Q and the temperature of the short blade, (212)–(223)."""
 from __future__ import annotations
 
 from pendsym import checks
@@ -79,4 +79,17 @@ def specs() -> tuple[Spec, ...]:
              deps=(rid(221, "Q"), rid(22, "beta1"), rid(16, "w0")), printed=printed.Q_221_ends, readings=(READ_VW,),
              check=truth.orders(*both, quantity=lambda env: env["K"] * (env["z"] - env["z'"]), scale=truth.by_lambda,
                                 expected=1, family=truth.FIXED, what="Q = K(z − z') (45) of the modes, over λ")),
+        Spec(rid(222, "dT"), "dT/T per degree when λ², R² ≪ a²", src(70, "222"), r"\frac{dT}{T}", derivation.dT_222,
+             deps=(rid(60, "dT"), rid(216, "K"), rid(22, "beta1"), rid(16, "w0")), printed=printed.dT_222,
+             readings=(READ_VW, printed.READ_BETA_T, printed.READ_222),
+             check=checks.All((truth.temperature_order("uniform"), truth.temperature_order("tapered"))),
+             note="(60) with K of (216), to the first order in λ/a (M_λ = O(λ²), G_2 = O(λ): Haag's footnotes), "
+                  "R = 0.  The printed form is twice the derived one: its leading term α' should be α'/2, as in "
+                  "(223) which Haag derives from it (and as T ∝ √(l/g) gives)."),
+        Spec(rid(223, "dT"), "dT/T per degree for the uniform blade", src(70, "223"), r"\frac{dT}{T}",
+             derivation.dT_223, deps=(rid(222, "dT"), rid(159, "v0"), rid(159, "w0"), rid(166, "Gamma2")),
+             printed=printed.dT_223, defs=DEFINITIONS, readings=(printed.READ_BETA_T, printed.READ_223),
+             check=truth.temperature_order("uniform"),
+             note="The α' and α terms agree with the text; the β term prints U_1 where G_2 = λ(U_1² + U_2/u)/2 "
+                  "gives U_1²."),
     )

@@ -336,3 +336,96 @@ def F2_at_one() -> checks.Values:
     return checks.Values(truth="F_2/λ = (1/λ)∫(φ1 + φ2)² ds (79) at K = 1 by quadrature on the shot uniform blade, "
                                "u = 2 and 5", points=F2_points,
                          confirm=lambda dps: {"F2": shot("uniform", dps).F(2, 1)}, kind="quadrature")
+
+
+# ---------------------------------------------------------------- n°70: temperature
+def temperature_inputs(env, name, dps):
+    """G_2 of (79) at the mode's K by quadrature on the shot blade, M_λ, the coefficients of n°70."""
+    from ..ch1_variations.truth import TEMPERATURE
+    values = {key: mp.mpf(text) for key, text in TEMPERATURE.items()}
+    values.update({"G_2": shot(name, dps).G(2, env["K"]), "M_lambda": shot(name, dps).M_at(env["lambda"])})
+    return values
+
+
+def temperature_truth(name: str):
+    """d log T per degree of the principal mode: α'(a∂_a + R∂_R) + αλ∂_λ + (β + 4α)∂_ε log T, the λ and ε
+    derivatives by the 5-point stencil on the varied direct blades of chapter I's truth (ch1_variations:
+    λ(1 + kH), M(1 + kH)), the a, R one by the stencil at a fixed blade (step 1e-9)."""
+    from ..ch1_variations import truth as variations
+
+    def quantity(env):
+        dps = env["dps"]
+        a_v, R_v, g_v = env["a"], env["R"], env["g"]
+        with mp.workdps(dps + 12):
+            def log_T(sus, scale=1):
+                return -mp.log(suspension.modes(sus, a_v * scale, R_v * scale, g_v)[0].n2) / 2
+            h = mp.mpf("1e-9")
+            scaling = variations.stencil(lambda k: log_T(direct(name, dps), 1 + k * h), h)
+            along = {kind: variations.stencil(lambda k, kind=kind: log_T(variations.direct(name, kind, k, dps)),
+                                              variations.step_size(name, kind, dps)) for kind in ("lam", "one")}
+            return (env["alpha'"] * scaling + env["alpha"] * env["lambda"] * along["lam"]
+                    + (env["beta_t"] + 4 * env["alpha"]) * along["one"])
+    return quantity
+
+
+def with_dps(inputs):
+    """inputs that also hand the working precision to the quantity (its stencils solve new blades)."""
+    return lambda env, name, dps: {**inputs(env, name, dps), "dps": dps}
+
+
+def temperature_order(name: str) -> checks.Order:
+    from ..ch1_variations.truth import TEMPERATURE
+    return order(temperature_truth(name), lambda env: env["alpha'"], 2, f"d log T per degree {TEMPERATURE}, over α'",
+                 name=name, family=FIXED, inputs=with_dps(temperature_inputs))
+
+
+# ---------------------------------------------------------------- n°71: the launches
+ATTACK = {"tapered": "0.45", "uniform": "1.35"}     # AB = b over a: between the foci, below F
+
+
+def attack_inputs(env, name, dps):
+    return {"b": env["a"] * mp.mpf(ATTACK[name])}
+
+
+def static_ratio(name: str) -> Quantity:
+    """A'/A after release from the static deviation (n°18): the ordinates of F' and F (the nodes of the
+    modes) at the equilibrium of the direct blade under a force at AB = b (pendsym.suspension.static_offset)."""
+    def quantity(env):
+        with mp.workdps(env["dps"] + 12):
+            beta0, theta0 = suspension.static_offset(direct(name, env["dps"]), env["a"], env["b"], mp.mpf("0.01"))
+            return (beta0 + (env["a"] + env["z'"]) * theta0) / (beta0 + (env["a"] + env["z"]) * theta0)
+    return quantity
+
+
+def blow_ratio(name: str) -> Quantity:
+    """A'/A after a blow at AB = b (n°19–20): the blow solved from the mechanics and the initial velocity
+    decomposed on the modes (chapter I's truth, ch1_launch: impact_truth, modal_amplitudes)."""
+    from ..ch1_launch import truth as launch
+
+    def quantity(env):
+        with mp.workdps(env["dps"] + 12):
+            principal, parasitic = suspension.modes(direct(name, env["dps"]), env["a"], env["R"], env["g"])
+            solution = launch.impact_truth(env["a"], env["R"], env["b"], mp.mpf(1), mp.mpf("0.37"), mp.mpf("0.62"),
+                                           mp.mpf("0.8"))
+            A, Ap = launch.modal_amplitudes(principal, parasitic, env["a"], solution[0], solution[1])
+            return Ap / A
+    return quantity
+
+
+def launch_order(kind: str, name: str) -> checks.Order:
+    quantity = static_ratio(name) if kind == "static" else blow_ratio(name)
+    what = ("A'/A after release from the static deviation, the ordinates of the nodes at the equilibrium "
+            "(pendsym.suspension.static_offset)" if kind == "static" else
+            "A'/A after a blow (m' = 0.37m, h = 0.62), the blow solved from the mechanics and decomposed on the modes")
+    return order(quantity, quantity, 1, f"{what}, AB = {ATTACK[name]}a (relative residual)", name=name,
+                 inputs=with_dps(attack_inputs))
+
+
+def launch_ratio_order(name: str) -> checks.Order:
+    """(228)/(227): the ratio of the blow's A'/A to the static release's, relative residual."""
+    static, blow = static_ratio(name), blow_ratio(name)
+
+    def quantity(env):
+        return blow(env) / static(env)
+    return order(quantity, quantity, 1, f"(A'/A after the blow)/(A'/A after the static release), AB = "
+                 f"{ATTACK[name]}a (relative residual)", name=name, inputs=with_dps(attack_inputs))
