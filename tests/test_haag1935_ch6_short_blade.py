@@ -111,3 +111,40 @@ def test_length_correction_fails_with_a_sign_error(built):
     result = built[rid(219, "dl")]
     wrong = dataclasses.replace(Result(result.spec, lam + v0 - w0, None))
     assert not checks.run(result.spec.check, wrong, "quick").passed
+
+
+# ---------------------------------------------------------------- n°70–71: temperature, launches
+def test_temperature_formula_is_twice_the_derived_one(built):
+    """(222) as printed is 2 × the first-order (60): its leading term α' where T ∝ √(l/g) gives α'/2."""
+    from derivations.haag1935.symbols import alpha_rod
+    result = built[rid(222, "dT")]
+    assert sp.simplify(result.spec.printed() - 2 * result.derived) == 0
+    assert sp.limit(result.derived, a, sp.oo) == alpha_rod / 2
+
+
+def test_uniform_temperature_differs_in_the_beta_term_only(built):
+    """(223): printed − derived = (λβ/4a)(U_1² − U_1): only the thermo-elastic term differs."""
+    from derivations.haag1935.symbols import U1, alpha_blade, alpha_rod, beta_t
+    result = built[rid(223, "dT")]
+    difference = (result.spec.printed() - result.derived).subs(dict(DEFS))
+    expected = (lam * beta_t / (4 * a) * (U1**2 - U1)).subs(dict(DEFS))
+    at = {u: sp.Rational(7, 3), lam: sp.Rational(1, 10), a: 2, beta_t: sp.Rational(-3, 10000),
+          alpha_blade: sp.Rational(11, 10**6), alpha_rod: sp.Rational(9, 10**6)}
+    assert abs(sp.N((difference - expected).subs(at), 30)) < 1e-30
+    assert abs(sp.N(difference.subs(at), 30)) > 1e-8
+
+
+def test_launch_ratios_keep_the_focal_factor(built):
+    from derivations.haag1935.ch6_short_blade import derivation
+    for eq in (227, 228):
+        result = built[rid(eq, "ratio")]
+        assert sp.simplify(result.derived - result.spec.printed().subs(L_OF_A)) == 0
+        assert sp.simplify(result.derived / derivation.focal_ratio()).free_symbols.isdisjoint({z, sp.Symbol("b")})
+
+
+@pytest.mark.slow
+def test_printed_temperature_fails_its_order_check(built):
+    """The check that passes the derived (222) fails the printed one (a residual of order 0)."""
+    result = built[rid(222, "dT")]
+    evidence = checks.run(result.spec.check.checks[0], result, "quick")
+    assert evidence.passed and evidence.printed_agrees is False and abs(evidence.printed_order) < 0.3

@@ -126,7 +126,7 @@ def G2_uniform(deps) -> sp.Expr:
 
 def S_uniform_235(deps) -> sp.Expr:
     """(235), second and third forms: S = a/G_2 with G_2 of the uniform blade at K = 1."""
-    return sp.simplify(d(deps, 235, "S").subs(G_2, G2_uniform(deps)).rewrite(sp.exp))
+    return sp.factor(sp.cancel(d(deps, 235, "S").subs(G_2, G2_uniform(deps))))
 
 
 def u_factor_235(deps) -> sp.Expr:
