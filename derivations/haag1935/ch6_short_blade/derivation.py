@@ -79,6 +79,11 @@ def dl_220(deps) -> sp.Expr:
     return sp.simplify(expr)
 
 
+def dl_thread_220(deps) -> sp.Expr:
+    """n°69: Δl of (220) as u → ∞ (the thread, a rigid pendulum hung at O)."""
+    return sp.limit(d(deps, 220, "dl"), u, sp.oo)
+
+
 def u_root_220(deps) -> sp.Expr:
     """n°69: the u where Δl of (220) vanishes (sign change; mpmath findroot from u = 1)."""
     ratio = sp.simplify(d(deps, 220, "dl") / lam)

@@ -32,7 +32,12 @@ def scaled(expr: sp.Expr, extra: tuple = ()) -> sp.Expr:
 def truncated(expr: sp.Expr, order: int = 1) -> sp.Expr:
     """The series of expr in λ/a up to (λ/a)^order included, at δ = 1 (expr itself unscaled)."""
     series = sp.series(scaled(expr), DELTA, 0, order + 1).removeO()
-    return sp.expand(series).subs(DELTA, 1)
+    return tidy(sp.expand(series).subs(DELTA, 1))
+
+
+def tidy(expr: sp.Expr) -> sp.Expr:
+    """expr collected on the blade's quantities, each coefficient factored (for reading; the same value)."""
+    return sp.collect(sp.expand(expr), BLADE_LENGTHS + BLADE_SQUARES, sp.factor)
 
 
 def leading(expr: sp.Expr, extra: tuple = ()) -> sp.Expr:
@@ -59,5 +64,5 @@ def root_series(equation: sp.Expr, var: sp.Symbol, start: sp.Expr, order: int = 
     for k, c in enumerate(coefficients, start=1):
         term = expansion.coeff(DELTA, k).subs(solved)
         solved[c] = sp.simplify(sp.solve(term, c)[0])
-    return sp.expand(trial.subs(solved).subs(DELTA, 1))
+    return tidy(trial.subs(solved).subs(DELTA, 1))
 

@@ -1,11 +1,14 @@
 """Haag 1935, chapter VI, n°68–70: the foci, the period, Δl, Q and the temperature of the short blade, (212)–(223)."""
 from __future__ import annotations
 
+import sympy as sp
+
 from pendsym import checks
 from pendsym.result import Spec
 
 from ..common import READ_VW, rid, src
-from . import derivation, printed, truth
+from ..symbols import lam
+from . import derivation, kernels, printed, truth
 from .printed import DEFINITIONS, L_DEFINITION
 
 FOCI = (rid(214, "z"), rid(215, "zp"))
@@ -59,10 +62,16 @@ def specs() -> tuple[Spec, ...]:
              defs=DEFINITIONS,
              check=truth.orders("uniform", "uniform_half", quantity=truth.length_increase, scale=truth.by_lambda,
                                 expected=1, family=truth.FIXED, what="Δl = g/n² − l of the principal mode, over λ"),
+             kernel=kernels.DL_KERNEL,
              note="U + U_1 = U_2 (161) turns λ − v_0 − w_0 into the printed form.  Checked at u = 2 and 1/2: the "
                   "coefficient of λ/a in the error of Δl/λ falls fast with u (14.7 at u = 1/2, 0.72 at u = 1, "
                   "0.019 at u = 2, ≈ 0 near u = 4, −5e−4 at u = 5), so that at u = 5 the residual is of the "
                   "second order over the sequence."),
+        Spec(rid(220, "thread"), "Δl = λ for u = ∞", src(69, None), r"\Delta l", derivation.dl_thread_220,
+             deps=(rid(220, "dl"),), printed=printed.dl_thread,
+             check=checks.Proof("the limit of (220) as u → ∞ is λ (SymPy limit)",
+                                holds=lambda expr: sp.simplify(expr - lam) == 0),
+             note="Unnumbered (\"Pour u = ∞, on retrouve bien Δl = λ\"): the pendulum hung from a thread of length λ."),
         Spec(rid(220, "u_root"), "the u where Δl of (220) vanishes (\"u > 1,2 environ\")", src(69, None), "u",
              derivation.u_root_220, deps=(rid(220, "dl"),), printed=printed.u_root_220,
              check=truth.number_check(truth.dl_zero_truth, "the zero of λ − v_0 − w_0 in u, v_0, w_0 of the shot "
