@@ -266,3 +266,14 @@ def ratio_228_227(deps) -> sp.Expr:
     """n°71: (228) over (227)."""
     ratio = d(deps, 228, "ratio") / d(deps, 227, "ratio")
     return sp.simplify(ratio.subs(beta1, beta1_positive))
+
+
+# ---------------------------------------------------------------- n°73, 75: (232)
+THETA_0 = sp.Symbol("theta_0", positive=True)     # amplitude θ0 of the principal oscillation
+
+
+def fatigue_232(deps) -> sp.Expr:
+    """(232): T' of the principal oscillation (178) at the fixed clamp s = 0, K = 1 (n°75: "K est voisin de
+    l'unité"), amplitude θ0."""
+    from ..symbols import s, theta
+    return sp.simplify(d(deps, 178, "Tprime").subs({s: 0, K: 1, theta: THETA_0}))

@@ -189,3 +189,9 @@ READ_BARS = Reading("FB̄/F'B̄ (overlined)", "algebraic distances: FB̄ = b −
 
 def dl_thread():
     return lam
+
+
+def fatigue_232():
+    from ..symbols import E, T
+    from .derivation import THETA_0
+    return sp.sqrt(3 * E * T) * U2 * THETA_0

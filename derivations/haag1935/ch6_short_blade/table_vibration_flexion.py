@@ -6,6 +6,7 @@ from pendsym import checks
 from pendsym.result import Spec
 
 from ..ch1_shape.printed import eq87 as optimum_87
+from ..ch3_uniform.printed import T_DEFINITION
 from ..common import READ_VW, rid, src
 from . import derivation, printed, truth
 from .printed import DEFINITIONS
@@ -47,6 +48,13 @@ def specs() -> tuple[Spec, ...]:
              derivation.ratio_228_227, deps=(rid(227, "ratio"), rid(228, "ratio")), printed=printed.ratio_228_227,
              defs=DEFINITIONS, check=checks.All((truth.launch_ratio_order("tapered"),
                                                  truth.launch_ratio_order("uniform")))),
+        # ------------------------------------------------------------ n°73–75
+        Spec(rid(232, "Tprime"), "T'_0 = √(3ET)U_2θ0, the fatigue at the fixed clamp", src(75, "232"), "T'_0",
+             derivation.fatigue_232, deps=(rid(178, "Tprime"),), printed=printed.fatigue_232,
+             defs=DEFINITIONS + (T_DEFINITION,),
+             check=checks.All((truth.fatigue_order("uniform"), truth.fatigue_order("uniform_half"))),
+             note="(178) at s = 0 with K = 1 (n°75); Haag reaches it also from (229)–(231) with B at F, which "
+                  "rest on (180)–(181), not built."),
         # ------------------------------------------------------------ n°76
         Spec(rid(235, "S"), "suppleness S ≈ a/G_2", src(76, "235"), "S", derivation.S_235, deps=(rid(82, "S"),),
              printed=printed.S_235,

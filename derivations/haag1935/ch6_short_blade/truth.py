@@ -429,3 +429,29 @@ def launch_ratio_order(name: str) -> checks.Order:
         return blow(env) / static(env)
     return order(quantity, quantity, 1, f"(A'/A after the blow)/(A'/A after the static release), AB = "
                  f"{ATTACK[name]}a (relative residual)", name=name, inputs=with_dps(attack_inputs))
+
+
+# ---------------------------------------------------------------- n°73–75: fatigue at the clamp
+FATIGUE = {"E": "2.1", "e": "0.3", "theta_0": "0.01"}
+
+
+def fatigue_inputs(env, name, dps):
+    return {key: mp.mpf(text) for key, text in FATIGUE.items()} | {"dps": dps}
+
+
+def clamp_stress(name: str) -> Quantity:
+    """T'_0 of the principal mode of amplitude θ0: E(e/2)φ'(0)θ0 (78) with φ' the curvature at O of the direct
+    blade in the mode (θ = 1)."""
+    def quantity(env):
+        with mp.workdps(env["dps"] + 12):
+            sus = direct(name, env["dps"])
+            principal = suspension.modes(sus, env["a"], env["R"], env["g"])[0]
+            curvature = sus.deflection(0, principal.beta, 1)[2]
+            return env["E"] * env["e"] / 2 * curvature * env["theta_0"]
+    return quantity
+
+
+def fatigue_order(name: str) -> checks.Order:
+    quantity = clamp_stress(name)
+    return order(quantity, quantity, 1, f"T'_0 = E(e/2)φ'(0)θ0 in the principal mode of the direct blade, {FATIGUE} "
+                 "(relative residual)", name=name, family=FIXED, inputs=fatigue_inputs)
