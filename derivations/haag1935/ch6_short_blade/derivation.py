@@ -277,3 +277,19 @@ def fatigue_232(deps) -> sp.Expr:
     l'unité"), amplitude θ0."""
     from ..symbols import s, theta
     return sp.simplify(d(deps, 178, "Tprime").subs({s: 0, K: 1, theta: THETA_0}))
+
+
+# ---------------------------------------------------------------- n°70: the orders of P_λ and G_2
+def P_bound_70(deps) -> sp.Expr:
+    """n°70: μw_0/λ − P_λ, P_λ = (59) at s = λ with K = 1 and v_λ + w_λ = w_0 (16); the memoir says it positive."""
+    from ..ch1_model import ends
+    from ..symbols import M_lambda, M_of_s, mu, s
+    P = ends(d(deps, 59, "P").subs(K, 1).subs(s, lam)).subs(M_of_s(lam), M_lambda)
+    P = sp.simplify(P.subs(wl, sp.solve(sp.Eq(w0, d(deps, 16, "w0")), wl)[0]))
+    return mu * w0 / lam - P
+
+
+def G2_bound_70(deps) -> sp.Expr:
+    """n°70: (μ/(λw_0))∫_0^λ (v_0 + w_λ)² ds − G_2, which the memoir says positive."""
+    from ..symbols import mu, s
+    return sp.simplify(mu / (lam * w0) * sp.integrate((v0 + wl) ** 2, (s, 0, lam))) - G_2

@@ -195,3 +195,13 @@ def fatigue_232():
     from ..symbols import E, T
     from .derivation import THETA_0
     return sp.sqrt(3 * E * T) * U2 * THETA_0
+
+
+def P_bound_70():
+    from ..symbols import M_lambda, mu
+    return mu * w0 / lam - w0**2 / M_lambda
+
+
+def G2_bound_70():
+    from ..symbols import mu
+    return mu * (v0 + wl) ** 2 / w0 - G_2

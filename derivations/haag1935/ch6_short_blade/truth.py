@@ -455,3 +455,20 @@ def fatigue_order(name: str) -> checks.Order:
     quantity = clamp_stress(name)
     return order(quantity, quantity, 1, f"T'_0 = E(e/2)φ'(0)θ0 in the principal mode of the direct blade, {FATIGUE} "
                  "(relative residual)", name=name, family=FIXED, inputs=fatigue_inputs)
+
+
+# ---------------------------------------------------------------- n°70: bounds of P_λ and G_2
+def blade_bound_points(level: str, dps: int):
+    """The shot end values, M_λ, μ = M2/M1 and G_2 at K = 1 (quadrature of (79)) of the four blades of
+    chapter I."""
+    for name in profiles.PROFILE_NAMES:
+        env = profiles.shot_env(name, dps)
+        sol = profiles.shot_blade(name, dps)
+        env.update({"M_lambda": sol.M_at(env["lambda"]), "G_2": sol.G(2, 1)})
+        yield name, env
+
+
+def blade_bound(what: str) -> checks.Inequality:
+    return checks.Inequality(truth=f"{what}: the shot blades uniform, hole, tapered, bulged (pendsym.blade), G_2 "
+                                   "at K = 1 by quadrature", points=blade_bound_points,
+                             confirm=profiles.confirmation_env)
