@@ -148,3 +148,39 @@ def test_printed_temperature_fails_its_order_check(built):
     result = built[rid(222, "dT")]
     evidence = checks.run(result.spec.check.checks[0], result, "quick")
     assert evidence.passed and evidence.printed_agrees is False and abs(evidence.printed_order) < 0.3
+
+
+def test_fatigue_at_the_clamp_is_U2(built):
+    """(232): (178) at s = 0, K = 1 is √(3ET)(U + U_1)θ0 = √(3ET)U_2θ0 (161), T = Ee²u²/(12λ²)."""
+    from derivations.haag1935.symbols import E, e
+    from derivations.haag1935.ch6_short_blade.derivation import THETA_0
+    derived = built[rid(232, "Tprime")].derived
+    expected = sp.sqrt(3 * E * E * e**2 * u**2 / (12 * lam**2)) * sp.coth(u) * THETA_0
+    at = {E: 2, e: sp.Rational(3, 10), u: sp.Rational(5, 2), lam: sp.Rational(1, 10), THETA_0: sp.Rational(1, 100)}
+    assert abs(sp.N((derived - expected).subs(at), 30)) < 1e-28
+
+
+def test_thread_limit_of_the_length_correction(built):
+    assert built[rid(220, "thread")].derived == lam
+
+
+def test_bounds_of_n70_are_positive_on_a_blade():
+    from derivations.haag1935.ch6_short_blade import derivation
+    from derivations.haag1935.symbols import G_2, M_lambda, mu, wl
+    env = {v0: sp.Rational(2, 100), wl: sp.Rational(3, 100), w0: sp.Rational(4, 100), lam: sp.Rational(1, 10),
+           mu: 2, M_lambda: sp.Rational(1, 100), G_2: sp.Rational(2, 100)}
+    assert derivation.G2_bound_70(None).subs(env) > 0
+    assert (derivation.G2_bound_70(None).subs(env | {G_2: 1})) < 0
+
+
+def test_every_result_of_chapter_six_has_a_heading():
+    from derivations.haag1935 import MEMOIR
+    ids = {spec.id for spec in ch6_short_blade.specs()}
+    headed = {i for heading in MEMOIR.report_headings() if heading.title.startswith("Chapter VI") for i in heading.ids}
+    assert headed == ids and len(ids) == len(ch6_short_blade.specs())
+
+
+def test_every_claim_has_an_independent_check():
+    for spec in ch6_short_blade.specs():
+        assert spec.check is not None, spec.id
+        assert spec.definition == isinstance(spec.check, checks.Definition), spec.id

@@ -293,3 +293,21 @@ def G2_bound_70(deps) -> sp.Expr:
     """n°70: (μ/(λw_0))∫_0^λ (v_0 + w_λ)² ds − G_2, which the memoir says positive."""
     from ..symbols import mu, s
     return sp.simplify(mu / (lam * w0) * sp.integrate((v0 + wl) ** 2, (s, 0, lam))) - G_2
+
+
+# ---------------------------------------------------------------- n°73: (229)
+Q_FORCE = sp.Symbol("Q", real=True)               # the force of the static launch (n°18), as chapter III has it
+Q_POSITIVE = sp.Symbol("Q", positive=True)        # … taken positive, as Haag does when he takes the maximum
+def fatigue_229(at: str):
+    """(229): the largest T'_0 (at = "T0") or T'_λ ("Tl") of (180) after release from the static deviation:
+    K = 1, 1/K' = 0 (224), the principal term at t = 0 and the parasitic one at n't = 0 or π, so that the two
+    amplitudes add in absolute value."""
+    def derive(deps):
+        from ..symbols import mg
+        n, n_prime, t, K_prime = (sp.Symbol(name, **assumption) for name, assumption in (
+            ("n", {"positive": True}), ("n'", {"positive": True}), ("t", {"real": True}), ("K'", {"real": True})))
+        expr = sp.expand(d(deps, 180, at).subs(Q_FORCE, Q_POSITIVE))
+        principal = expr.coeff(sp.cos(n * t)).subs(K, 1)
+        parasitic = sp.limit(expr.coeff(sp.cos(n_prime * t)), K_prime, sp.oo)
+        return sp.Abs(sp.factor(principal)) + sp.Abs(sp.factor(parasitic))
+    return derive

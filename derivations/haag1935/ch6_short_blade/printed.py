@@ -205,3 +205,12 @@ def P_bound_70():
 def G2_bound_70():
     from ..symbols import mu
     return mu * (v0 + wl) ** 2 / w0 - G_2
+
+
+def fatigue_229(at: str):
+    from ..ch3_uniform.launch_symbols import stress_scale, weight
+    from ..symbols import b
+    from .derivation import Q_POSITIVE as Q
+    coefficient = U2 if at == "T0" else U1
+    return lambda: (stress_scale * Q / weight * (coefficient * sp.Abs(b - a - zp) + U * sp.Abs(b - a - z))
+                    / sp.Abs(z - zp))

@@ -49,6 +49,12 @@ def specs() -> tuple[Spec, ...]:
              defs=DEFINITIONS, check=checks.All((truth.launch_ratio_order("tapered"),
                                                  truth.launch_ratio_order("uniform")))),
         # ------------------------------------------------------------ n°73–75
+        *(Spec(rid(229, at), f"largest {label} after release from the static deviation", src(73, "229"), label,
+               derivation.fatigue_229(at), deps=(rid(180, at),), printed=printed.fatigue_229(at), defs=DEFINITIONS,
+               check=checks.All((truth.static_launch_order("uniform", at), truth.static_launch_order("uniform_half", at))),
+               note="(180) with K = 1, 1/K' = 0 (224), the principal term at t = 0 and the parasitic one at n't = 0 "
+                    "or π: the amplitudes add; distances in absolute value.")
+          for at, label in (("T0", "T'_0"), ("Tl", r"T'_\lambda"))),
         Spec(rid(232, "Tprime"), "T'_0 = √(3ET)U_2θ0, the fatigue at the fixed clamp", src(75, "232"), "T'_0",
              derivation.fatigue_232, deps=(rid(178, "Tprime"),), printed=printed.fatigue_232,
              defs=DEFINITIONS + (T_DEFINITION,),

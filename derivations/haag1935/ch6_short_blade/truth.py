@@ -472,3 +472,42 @@ def blade_bound(what: str) -> checks.Inequality:
     return checks.Inequality(truth=f"{what}: the shot blades uniform, hole, tapered, bulged (pendsym.blade), G_2 "
                                    "at K = 1 by quadrature", points=blade_bound_points,
                              confirm=profiles.confirmation_env)
+
+
+STATIC_LAUNCH = {"Q": "0.013", "mg": "9.81", "E": "2.1", "T": "0.4"}
+ATTACK_FIXED = {"uniform": "0.45", "uniform_half": "1.35"}    # AB = b over a: between the foci, below F
+
+
+def static_launch_inputs(env, name, dps):
+    return ({key: mp.mpf(text) for key, text in STATIC_LAUNCH.items()}
+            | {"b": env["a"] * mp.mpf(ATTACK_FIXED[name]), "dps": dps})
+
+
+def static_launch_stress(name: str, at: str) -> Quantity:
+    """The largest |T'| at O (at = "T0") or at A ("Tl") after release from the static deviation: the offset
+    of the direct blade under Q at AB = b (pendsym.suspension.static_offset) decomposed on the modes, the
+    stress √(3ET)(λ/u)φ' (= E(e/2)φ', T = mg/(eh)) of the direct blade's curvature, at t = 0 and n't = π
+    (where the memoir places the maximum)."""
+    def quantity(env):
+        dps = env["dps"]
+        with mp.workdps(dps + 12):
+            sus = direct(name, dps)
+            principal, parasitic = suspension.modes(sus, env["a"], env["R"], env["g"])
+            beta0, theta0 = suspension.static_offset(sus, env["a"], env["b"], env["Q"] / env["mg"])
+            c = mp.lu_solve(mp.matrix([[principal.beta, parasitic.beta], [1, 1]]), mp.matrix([beta0, theta0]))
+            where = 0 if at == "T0" else env["lambda"]
+            scale = mp.sqrt(3 * env["E"] * env["T"]) * env["lambda"] / env["u"]
+
+            def stress(t):
+                weights = [c[0] * mp.cos(mp.sqrt(principal.n2) * t), c[1] * mp.cos(mp.sqrt(parasitic.n2) * t)]
+                beta_t = weights[0] * principal.beta + weights[1] * parasitic.beta
+                return scale * sus.deflection(where, beta_t, weights[0] + weights[1])[2]
+            return max(abs(stress(0)), abs(stress(mp.pi / mp.sqrt(parasitic.n2))))
+    return quantity
+
+
+def static_launch_order(name: str, at: str) -> checks.Order:
+    quantity = static_launch_stress(name, at)
+    return order(quantity, quantity, 1, f"the largest |T'| at {'O' if at == 'T0' else 'A'} (t = 0 or n't = π) after "
+                 f"release from the static deviation, {STATIC_LAUNCH}, AB = {ATTACK_FIXED[name]}a (relative residual)",
+                 name=name, family=FIXED, inputs=static_launch_inputs)
