@@ -6,11 +6,14 @@ The section keeps its jobs apart:
 * :mod:`.derivation`: the derivation (pure SymPy), series in λ/a of the derived results of
   chapter I (any M(s)) and chapter III (the uniform blade), step by step;
 * :mod:`.printed`: the formulas as printed, with their OCR readings;
-* :mod:`.truth`: the independent truth, the exact eigenproblem of the pendulum on the directly
-  solved blade as a = λ/ε grows, judged by the fitted order of the residual in ε;
+* :mod:`.truth`, :mod:`.truth_dynamics`: the independent truth, the exact eigenproblem of the
+  pendulum on the directly solved blade as a = λ/ε grows (and its temperature derivatives, static
+  offset, blow and curvature), judged by the fitted order of the residual in ε;
+* :mod:`.kernels`: the kernel of Δl (220);
 * the Result tables, one per group of paragraphs, which join them.
 
-n°72–75 (the escapement, fatigue) and n°78–81 (the perturbations) are not built yet.
+Not built yet: (230), (231), (233), (234) of n°73–74 (the fatigue with B placed by (67), and after a
+blow) and n°78–81, eqs. (241)–(254) (the perturbations, which specialise chapter II).
 """
 from __future__ import annotations
 

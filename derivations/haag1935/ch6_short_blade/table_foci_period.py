@@ -8,7 +8,7 @@ from pendsym.result import Spec
 
 from ..common import READ_VW, rid, src
 from ..symbols import lam
-from . import derivation, kernels, printed, truth
+from . import derivation, kernels, printed, truth, truth_dynamics
 from .printed import DEFINITIONS, L_DEFINITION
 
 FOCI = (rid(214, "z"), rid(215, "zp"))
@@ -91,21 +91,21 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(221, "P_bound"), "P_λ = w_0²/M_λ < μw_0/λ (\"d'après (19)\")", src(70, None),
              r"\mu\frac{w_0}{\lambda} - P_\lambda", derivation.P_bound_70, deps=(rid(59, "P"), rid(16, "w0")),
              printed=printed.P_bound_70, readings=(READ_VW,),
-             check=truth.blade_bound("μw_0/λ − w_0²/M_λ")),
+             check=truth_dynamics.blade_bound("μw_0/λ − w_0²/M_λ")),
         Spec(rid(221, "G2_bound"), "G_2 < μ(v_0 + w_λ)²/w_0", src(70, None),
              r"\mu\frac{(v_0 + w_\lambda)^2}{w_0} - G_2", derivation.G2_bound_70, printed=printed.G2_bound_70,
-             readings=(READ_VW,), check=truth.blade_bound("μ(v_0 + w_λ)²/w_0 − G_2")),
+             readings=(READ_VW,), check=truth_dynamics.blade_bound("μ(v_0 + w_λ)²/w_0 − G_2")),
         Spec(rid(222, "dT"), "dT/T per degree when λ², R² ≪ a²", src(70, "222"), r"\frac{dT}{T}", derivation.dT_222,
              deps=(rid(60, "dT"), rid(216, "K"), rid(22, "beta1"), rid(16, "w0")), printed=printed.dT_222,
              readings=(READ_VW, printed.READ_BETA_T, printed.READ_222),
-             check=checks.All((truth.temperature_order("uniform"), truth.temperature_order("tapered"))),
+             check=checks.All((truth_dynamics.temperature_order("uniform"), truth_dynamics.temperature_order("tapered"))),
              note="(60) with K of (216), to the first order in λ/a (M_λ = O(λ²), G_2 = O(λ): Haag's footnotes), "
                   "R = 0.  The printed form is twice the derived one: its leading term α' should be α'/2, as in "
                   "(223) which Haag derives from it (and as T ∝ √(l/g) gives)."),
         Spec(rid(223, "dT"), "dT/T per degree for the uniform blade", src(70, "223"), r"\frac{dT}{T}",
              derivation.dT_223, deps=(rid(222, "dT"), rid(159, "v0"), rid(159, "w0"), rid(166, "Gamma2")),
              printed=printed.dT_223, defs=DEFINITIONS, readings=(printed.READ_BETA_T, printed.READ_223),
-             check=truth.temperature_order("uniform"),
+             check=truth_dynamics.temperature_order("uniform"),
              note="The α' and α terms agree with the text; the β term prints U_1 where G_2 = λ(U_1² + U_2/u)/2 "
                   "gives U_1²."),
     )

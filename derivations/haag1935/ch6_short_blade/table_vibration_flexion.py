@@ -8,7 +8,7 @@ from pendsym.result import Spec
 from ..ch1_shape.printed import eq87 as optimum_87
 from ..ch3_uniform.printed import T_DEFINITION
 from ..common import READ_VW, rid, src
-from . import derivation, printed, truth
+from . import derivation, printed, truth, truth_dynamics
 from .printed import DEFINITIONS
 
 FORK = "x = λ − c, the root of smaller modulus of (87) (verified in n°25 against the fork's glide) with z', K of the modes"
@@ -37,28 +37,28 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(227, "ratio"), "A'/A after release from the static deviation", src(71, "227"), "A'/A",
              derivation.amplitude_ratio(69), deps=(rid(69, "ratio"), rid(41, "a1"), rid(214, "z"), rid(215, "zp")),
              printed=printed.ratio_227, defs=DEFINITIONS, readings=(printed.READ_BARS,),
-             check=checks.All((truth.launch_order("static", "tapered"), truth.launch_order("static", "uniform"))),
+             check=checks.All((truth_dynamics.launch_order("static", "tapered"), truth_dynamics.launch_order("static", "uniform"))),
              note="1/(69) with a1 = −w_λ (41); FB̄/F'B̄ kept, the rest at its leading order in λ/a."),
         Spec(rid(228, "ratio"), "A'/A after a blow at B", src(71, "228"), "A'/A", derivation.amplitude_ratio(73),
              deps=(rid(73, "ratio"), rid(41, "a1"), rid(214, "z"), rid(215, "zp")), printed=printed.ratio_228,
              defs=DEFINITIONS, readings=(printed.READ_BARS,),
-             check=checks.All((truth.launch_order("blow", "tapered"), truth.launch_order("blow", "uniform"))),
+             check=checks.All((truth_dynamics.launch_order("blow", "tapered"), truth_dynamics.launch_order("blow", "uniform"))),
              note="1/(73) with a1 = −w_λ (41); FB̄/F'B̄ kept, the rest at its leading order in λ/a."),
         Spec(rid(228, "over227"), "(228) over (227) = (l/R)√(a/β1)", src(71, None), r"\frac{(228)}{(227)}",
              derivation.ratio_228_227, deps=(rid(227, "ratio"), rid(228, "ratio")), printed=printed.ratio_228_227,
-             defs=DEFINITIONS, check=checks.All((truth.launch_ratio_order("tapered"),
-                                                 truth.launch_ratio_order("uniform")))),
+             defs=DEFINITIONS, check=checks.All((truth_dynamics.launch_ratio_order("tapered"),
+                                                 truth_dynamics.launch_ratio_order("uniform")))),
         # ------------------------------------------------------------ n°73–75
         *(Spec(rid(229, at), f"largest {label} after release from the static deviation", src(73, "229"), label,
                derivation.fatigue_229(at), deps=(rid(180, at),), printed=printed.fatigue_229(at), defs=DEFINITIONS,
-               check=checks.All((truth.static_launch_order("uniform", at), truth.static_launch_order("uniform_half", at))),
+               check=checks.All((truth_dynamics.static_launch_order("uniform", at), truth_dynamics.static_launch_order("uniform_half", at))),
                note="(180) with K = 1, 1/K' = 0 (224), the principal term at t = 0 and the parasitic one at n't = 0 "
                     "or π: the amplitudes add; distances in absolute value.")
           for at, label in (("T0", "T'_0"), ("Tl", r"T'_\lambda"))),
         Spec(rid(232, "Tprime"), "T'_0 = √(3ET)U_2θ0, the fatigue at the fixed clamp", src(75, "232"), "T'_0",
              derivation.fatigue_232, deps=(rid(178, "Tprime"),), printed=printed.fatigue_232,
              defs=DEFINITIONS + (T_DEFINITION,),
-             check=checks.All((truth.fatigue_order("uniform"), truth.fatigue_order("uniform_half"))),
+             check=checks.All((truth_dynamics.fatigue_order("uniform"), truth_dynamics.fatigue_order("uniform_half"))),
              note="(178) at s = 0 with K = 1 (n°75); Haag reaches it also from (229)–(231) with B at F, which "
                   "rest on (180)–(181), not built."),
         # ------------------------------------------------------------ n°76
