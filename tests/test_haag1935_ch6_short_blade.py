@@ -184,3 +184,15 @@ def test_every_claim_has_an_independent_check():
     for spec in ch6_short_blade.specs():
         assert spec.check is not None, spec.id
         assert spec.definition == isinstance(spec.check, checks.Definition), spec.id
+
+
+def test_fatigue_by_point_of_attack_meets_232_at_the_focus(built):
+    """(230) and (231) both give √(3ET)U_2θ0 (232) when B is at F ≈ G (b = a); they differ elsewhere."""
+    from derivations.haag1935.ch3_uniform.launch_symbols import stress_scale
+    from derivations.haag1935.ch6_short_blade.derivation import THETA_0
+    from derivations.haag1935.symbols import U2, b
+    expected = (stress_scale * THETA_0 * U2).subs(dict(DEFS))
+    between, below = (built[rid(eq, "T0")].derived.subs(dict(DEFS)) for eq in (230, 231))
+    assert sp.simplify((between - expected).subs(b, a)) == 0
+    assert sp.simplify((below - expected).subs(b, a)) == 0
+    assert sp.simplify(between - below) != 0

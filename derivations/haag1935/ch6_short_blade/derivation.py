@@ -311,3 +311,18 @@ def fatigue_229(at: str):
         parasitic = sp.limit(expr.coeff(sp.cos(n_prime * t)), K_prime, sp.oo)
         return sp.Abs(sp.factor(principal)) + sp.Abs(sp.factor(parasitic))
     return derive
+
+
+def fatigue_by_attack(case: str):
+    """(230) (case "between": B between F' and F) or (231) ("below": B below F): the first (229) with θ0 of
+    (67) (a1 = −w_λ (41)) at its leading order in λ/a, F' at A (z' = −a) and F at G (z = 0, R² ≪ a²); each
+    distance taken with the sign of its case (b = a/2, or 3a/2, for the sign only)."""
+    def derive(deps):
+        from ..symbols import b
+        theta0 = leading(d(deps, 67, "theta0").subs(a1_symbol(), d(deps, 41, "a1")).subs(Q_FORCE, Q_POSITIVE))
+        force = sp.solve(sp.Eq(THETA_0, theta0), Q_POSITIVE)[0]
+        expr = d(deps, 229, "T0").subs({z: 0, zp: -a})
+        sample = {a: 1, b: sp.Rational(1, 2) if case == "between" else sp.Rational(3, 2)}
+        expr = expr.replace(sp.Abs, lambda x: x * sp.sign(x.subs(sample).subs(Q_POSITIVE, 1)))
+        return sp.simplify(expr.subs(Q_POSITIVE, force))
+    return derive

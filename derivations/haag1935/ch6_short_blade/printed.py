@@ -214,3 +214,12 @@ def fatigue_229(at: str):
     coefficient = U2 if at == "T0" else U1
     return lambda: (stress_scale * Q / weight * (coefficient * sp.Abs(b - a - zp) + U * sp.Abs(b - a - z))
                     / sp.Abs(z - zp))
+
+
+def fatigue_by_attack(case: str):
+    from ..ch3_uniform.launch_symbols import stress_scale
+    from ..symbols import b
+    from .derivation import THETA_0
+    if case == "between":
+        return lambda: stress_scale * THETA_0 * (U1 + U * a / b)
+    return lambda: stress_scale * THETA_0 * (U + U2 - U * a / b)

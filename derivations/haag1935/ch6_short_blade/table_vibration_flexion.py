@@ -55,6 +55,13 @@ def specs() -> tuple[Spec, ...]:
                note="(180) with K = 1, 1/K' = 0 (224), the principal term at t = 0 and the parasitic one at n't = 0 "
                     "or π: the amplitudes add; distances in absolute value.")
           for at, label in (("T0", "T'_0"), ("Tl", r"T'_\lambda"))),
+        *(Spec(rid(eq, "T0"), f"largest T'_0, B {where}", src(73, str(eq)), "T'_0", derivation.fatigue_by_attack(case),
+               deps=(rid(229, "T0"), rid(67, "theta0"), rid(41, "a1")), printed=printed.fatigue_by_attack(case),
+               defs=DEFINITIONS, check=checks.All(tuple(truth_dynamics.attack_order(name, attack)
+                                                        for name in ("uniform", "uniform_half"))),
+               note="(229) with θ0 of (67) at the leading order, F' at A, F at G (R² ≪ a²).")
+          for eq, case, where, attack in ((230, "between", "between F' and F", "0.45"),
+                                          (231, "below", "below F", "1.35"))),
         Spec(rid(232, "Tprime"), "T'_0 = √(3ET)U_2θ0, the fatigue at the fixed clamp", src(75, "232"), "T'_0",
              derivation.fatigue_232, deps=(rid(178, "Tprime"),), printed=printed.fatigue_232,
              defs=DEFINITIONS + (T_DEFINITION,),

@@ -156,9 +156,15 @@ STATIC_LAUNCH = {"Q": "0.013", "mg": "9.81", "E": "2.1", "T": "0.4"}
 ATTACK_FIXED = {"uniform": "0.45", "uniform_half": "1.35"}    # AB = b over a: between the foci, below F
 
 
-def static_launch_inputs(env, name, dps):
-    return ({key: mp.mpf(text) for key, text in STATIC_LAUNCH.items()}
-            | {"b": env["a"] * mp.mpf(ATTACK_FIXED[name]), "dps": dps})
+def static_launch_inputs(env, name, dps, attack=None):
+    """The launch's constants, b = (attack or ATTACK_FIXED[name])·a, and θ0 of the static offset of the direct
+    blade (what (230), (231) are written with)."""
+    values = ({key: mp.mpf(text) for key, text in STATIC_LAUNCH.items()}
+              | {"b": env["a"] * mp.mpf(attack or ATTACK_FIXED[name]), "dps": dps})
+    with mp.workdps(dps + 12):
+        values["theta_0"] = suspension.static_offset(direct(name, dps), env["a"], values["b"],
+                                                     values["Q"] / values["mg"])[1]
+    return values
 
 
 def static_launch_stress(name: str, at: str) -> Quantity:
@@ -189,3 +195,12 @@ def static_launch_order(name: str, at: str) -> checks.Order:
     return order(quantity, quantity, 1, f"the largest |T'| at {'O' if at == 'T0' else 'A'} (t = 0 or n't = π) after "
                  f"release from the static deviation, {STATIC_LAUNCH}, AB = {ATTACK_FIXED[name]}a (relative residual)",
                  name=name, family=FIXED, inputs=static_launch_inputs)
+
+
+def attack_order(name: str, attack: str) -> checks.Order:
+    """(230), (231): the largest |T'_0| after the static release with B at AB = attack·a."""
+    quantity = static_launch_stress(name, "T0")
+    return order(quantity, quantity, 1, f"the largest |T'| at O (t = 0 or n't = π) after release from the static "
+                 f"deviation, {STATIC_LAUNCH}, AB = {attack}a, θ0 of the static offset (relative residual)",
+                 name=name, family=FIXED,
+                 inputs=lambda env, blade_name, dps: static_launch_inputs(env, blade_name, dps, attack))
