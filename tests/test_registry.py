@@ -49,3 +49,9 @@ def test_unknown_id_suggests_the_ids_it_abbreviates_before_lookalikes():
     known = ["m.eq043.dT", "m.eq043.x", "m.eq343.a", "m.eq430.b"]
     assert registry.UnknownResult("m.eq43", known).near == ("m.eq043.dT", "m.eq043.x")
     assert registry.UnknownResult("m.eq343", known).near == ("m.eq343.a",)
+
+
+def test_every_result_is_under_one_heading_of_its_memoirs_report():
+    for key, memoir in registry.memoirs().items():
+        placed = [i for heading in memoir.report_headings() for i in heading.ids]
+        assert sorted(placed) == sorted(s.id for s in memoir.specs), key

@@ -1,9 +1,18 @@
-"""Haag 1935, Théorie de la suspension élastique des pendules: chapter I (any M(s), eqs. (1)–(87)),
-chapter III, the uniform blade (eqs. (156)–(183)), and chapter IX, blades with a hole (eqs. (321)–(346))."""
+"""Haag 1935, Théorie de la suspension élastique des pendules: the chapters rebuilt so far.
+
+Each chapter is a tuple of sections (a section package's ``sections()`` or Section.of lines);
+the report's headings group the Results of a chapter by equation number.
+"""
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
-from . import ch9_holes
+from . import ch6_short_blade, ch9_holes
+
+
+def _of(package) -> tuple[Section, ...]:
+    """The sections of a chapter package (its ``sections()``: (module, title) pairs)."""
+    return tuple(Section.of(module, title) for module, title in package.sections())
+
 
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
@@ -13,40 +22,43 @@ CHAPTER_1 = (
     Section.of(ch1_launch, "Chapter I. Principal oscillation and launching (64)–(76)"),
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
-CHAPTER_3 = tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
-CHAPTER_9 = tuple(Section.of(module, title) for module, title in ch9_holes.sections())
-SECTIONS = CHAPTER_1 + CHAPTER_3 + CHAPTER_9
-_CH1 = {sec.module for sec in CHAPTER_1}
-_CH3 = {sec.module for sec in CHAPTER_3}
-_CH9 = {sec.module for sec in CHAPTER_9}
+CHAPTER_3 = _of(ch3_uniform)
+CHAPTER_6 = _of(ch6_short_blade)
+CHAPTER_9 = _of(ch9_holes)
+SECTIONS = CHAPTER_1 + CHAPTER_3 + CHAPTER_6 + CHAPTER_9
 
 
-def _eqs(lo: int, hi: int, modules: set):
-    """Takes a Spec of the given section modules whose equation number lies in [lo, hi]."""
-    ids = {s.id for sec in SECTIONS if sec.module in modules for s in sec.specs}
+def _eqs(lo: int, hi: int, chapter: tuple[Section, ...]):
+    """Takes a Spec of the chapter whose equation number lies in [lo, hi]."""
+    ids = {s.id for sec in chapter for s in sec.specs}
     return lambda spec: spec.id in ids and lo <= int(spec.id.split(".")[1][2:]) <= hi
 
 
+HEADINGS = (
+    ("Chapter I. The equations and the functions v, w for any M(s) (1)–(20)", _eqs(1, 20, CHAPTER_1)),
+    ("Chapter I. End loads, equations of motion, foci, periods, existence (21)–(41)", _eqs(21, 41, CHAPTER_1)),
+    ("Chapter I. Small variations of the periods, temperature, g (42)–(63)", _eqs(42, 63, CHAPTER_1)),
+    ("Chapter I. Principal oscillation, launching, shape, fatigue, suppleness, fork (64)–(87)",
+     _eqs(64, 87, CHAPTER_1)),
+    ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, CHAPTER_3)),
+    ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, CHAPTER_3)),
+    ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, CHAPTER_3)),
+    ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, CHAPTER_3)),
+    ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, CHAPTER_3)),
+    ("Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)", _eqs(212, 223, CHAPTER_6)),
+    ("Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion (224)–(240)",
+     _eqs(224, 240, CHAPTER_6)),
+    ("Chapter IX. The rectangular hole (321)–(333)", _eqs(321, 333, CHAPTER_9)),
+    ("Chapter IX. The rhombus hole (334)–(346)", _eqs(334, 346, CHAPTER_9)),
+)
+
 MEMOIR = Memoir(
     key="haag1935",
-    title=("J. Haag, Théorie de la suspension élastique des pendules (1935), chapter I: first approximation "
-           "for any M(s), eqs. (1)–(87); chapter III: the uniform blade, eqs. (156)–(183); chapter IX: blades with a hole, "
-           "eqs. (321)–(346)"),
+    title=("J. Haag, Théorie de la suspension élastique des pendules (1935): chapter I, first approximation "
+           "for any M(s), eqs. (1)–(87); chapter III, the uniform blade, eqs. (156)–(183); chapter VI, the "
+           "short blade, eqs. (212)–(240); chapter IX, blades with a hole, eqs. (321)–(346)"),
     sections=SECTIONS,
-    headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), (
-        ("Chapter I. The equations and the functions v, w for any M(s) (1)–(20)", _eqs(1, 20, _CH1)),
-        ("Chapter I. End loads, equations of motion, foci, periods, existence (21)–(41)", _eqs(21, 41, _CH1)),
-        ("Chapter I. Small variations of the periods, temperature, g (42)–(63)", _eqs(42, 63, _CH1)),
-        ("Chapter I. Principal oscillation, launching, shape, fatigue, suppleness, fork (64)–(87)",
-         _eqs(64, 87, _CH1)),
-        ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, _CH3)),
-        ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, _CH3)),
-        ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, _CH3)),
-        ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
-        ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
-        ("Chapter IX. The rectangular hole (321)–(333)", _eqs(321, 333, _CH9)),
-        ("Chapter IX. The rhombus hole (334)–(346)", _eqs(334, 346, _CH9)),
-    )),
+    headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), HEADINGS),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,

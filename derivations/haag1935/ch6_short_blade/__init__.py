@@ -1,0 +1,42 @@
+"""Haag 1935, chapter VI: the short blade (λ/a small), n°68–77, eqs. (212)–(240).
+
+The section keeps its jobs apart:
+
+* :mod:`.expansion`: the bookkeeping of the series in λ/a (every length of the blade O(λ), M O(λ²));
+* :mod:`.derivation`: the derivation (pure SymPy), series in λ/a of the derived results of
+  chapter I (any M(s)) and chapter III (the uniform blade), step by step;
+* :mod:`.printed`: the formulas as printed, with their OCR readings;
+* :mod:`.truth`, :mod:`.truth_dynamics`: the independent truth, the exact eigenproblem of the
+  pendulum on the directly solved blade as a = λ/ε grows (and its temperature derivatives, static
+  offset, blow and curvature), judged by the fitted order of the residual in ε;
+* :mod:`.kernels`: the kernel of Δl (220);
+* the Result tables, one per group of paragraphs, which join them.
+
+Not built yet: (230), (231), (233), (234) of n°73–74 (the fatigue with B placed by (67), and after a
+blow) and n°78–81, eqs. (241)–(254) (the perturbations, which specialise chapter II).
+"""
+from __future__ import annotations
+
+from types import ModuleType
+
+from pendsym.result import Spec
+
+from . import table_foci_period, table_vibration_flexion
+
+SECTIONS: tuple[tuple[ModuleType, str], ...] = (
+    (table_foci_period, "Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)"),
+    (table_vibration_flexion, "Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion "
+                              "(224)–(240)"),
+)
+
+
+def sections() -> tuple[tuple[ModuleType, str], ...]:
+    """The (module, title) pairs of chapter VI, in the memoir's order; each module has ``specs()``."""
+    return SECTIONS
+
+
+def specs() -> tuple[Spec, ...]:
+    return tuple(spec for module, _title in SECTIONS for spec in module.specs())
+
+
+__all__ = ["SECTIONS", "sections", "specs"]
