@@ -32,6 +32,8 @@ def compare(result: Result) -> tuple[str, str]:
     """Stage 2: printed ≡ derived?"""
     if result.printed is None:
         return "derived-only", "the memoir prints no formula for it"
+    if result.spec.printed_decimals is not None:
+        return verify.compare_decimal(result.printed_value, result.derived_value, result.spec.printed_decimals)
     return verify.compare_forms(result.printed_value, result.derived_value, result.id, result.spec.instances)
 
 

@@ -112,6 +112,9 @@ class Spec:
     # substitutions of undefined functions (φ → a test function) under which
     # printed and derived are compared when they hold an arbitrary function
     instances: tuple[tuple[tuple[sp.Basic, sp.Basic], ...], ...] = ()
+    # the printed form is an approximate number given to this many decimals ("1,2 environ"):
+    # it matches when it is the derived value rounded to them (truncation is said, not matched)
+    printed_decimals: int | None = None
 
     @property
     def memoir(self) -> str:

@@ -94,6 +94,25 @@ def exactly_equal(a: sp.Expr, b: sp.Expr) -> bool:
     return sp.simplify(sp.expand(sp.expand_trig(d))) == 0
 
 
+def compare_decimal(printed: sp.Expr, derived: sp.Expr, decimals: int) -> tuple[str, str]:
+    """('match' | 'discrepancy', how) for a number printed to ``decimals`` decimals: a match when it
+    is the derived value correctly rounded; a truncation or any other value is a discrepancy."""
+    with mp.workdps(50):
+        exact = mp.mpf(sp.N(derived, 60))
+        shown = mp.mpf(sp.N(printed, 60))
+        unit = mp.mpf(10) ** -decimals
+        rounded = mp.nint(exact / unit) * unit
+        truncated = (mp.floor(abs(exact) / unit) * unit) * mp.sign(exact)
+        digits = f"{decimals} decimal{'s' if decimals != 1 else ''}"
+        said = f"derived {mp.nstr(exact, 12)}"
+        if abs(shown - rounded) < unit / 1000:
+            return "match", f"the printed value is the derived one correctly rounded to {digits} ({said})"
+        if abs(shown - truncated) < unit / 1000:
+            return ("discrepancy", f"the printed value is the derived one truncated to {digits}, not rounded "
+                    f"(rounding gives {mp.nstr(rounded, decimals + 2)}; {said})")
+        return "discrepancy", f"the printed value is not the derived one to {digits} ({said})"
+
+
 def compare_forms(printed: sp.Expr, derived: sp.Expr, seed: str, instances=()) -> tuple[str, str]:
     """('match' | 'discrepancy', how it was decided).
 

@@ -47,3 +47,15 @@ def test_order_check_reports_the_printed_form():
                             derived=lambda p: p - p**3 / 6, printed=lambda p: p + p**3 / 6,
                             expected=5, band=0.2, truth_desc="sin")
     assert ev.passed and ev.printed_agrees is False and abs(ev.printed_order - 3) < 0.05
+
+
+def test_a_printed_decimal_matches_only_when_correctly_rounded():
+    root = sp.Float("1.199678640", 30)
+    status, how = verify.compare_decimal(sp.Rational(12, 10), root, 1)
+    assert status == "match" and "rounded to 1 decimal" in how
+    status, how = verify.compare_decimal(sp.Rational(993, 1000), sp.Float("0.993996", 30), 3)
+    assert status == "discrepancy" and "truncated" in how and "0.994" in how
+    status, how = verify.compare_decimal(sp.Rational(95, 100), sp.Float("0.993996", 30), 2)
+    assert status == "discrepancy" and "not the derived one" in how
+    status, _ = verify.compare_decimal(sp.Rational(-12, 10), -root, 1)
+    assert status == "match"

@@ -73,11 +73,11 @@ def specs() -> tuple[Spec, ...]:
                                 holds=lambda expr: sp.simplify(expr - lam) == 0),
              note="Unnumbered (\"Pour u = ∞, on retrouve bien Δl = λ\"): the pendulum hung from a thread of length λ."),
         Spec(rid(220, "u_root"), "the u where Δl of (220) vanishes (\"u > 1,2 environ\")", src(69, None), "u",
-             derivation.u_root_220, deps=(rid(220, "dl"),), printed=printed.u_root_220,
+             derivation.u_root_220, deps=(rid(220, "dl"),), printed=printed.u_root_220, printed_decimals=1,
              check=truth.number_check(truth.dl_zero_truth, "the zero of λ − v_0 − w_0 in u, v_0, w_0 of the shot "
                                       "uniform blade λ = 0.1 (pendsym.blade, no closed form), mpmath findroot"),
-             note="The root of u th u = 1 is 1.19968: the printed \"1,2 environ\" is it rounded to one decimal "
-                  "(correct); printed and derived differ only by that rounding."),
+             note="The root of u th u = 1 is 1.19968: the printed \"1,2 environ\" is it correctly rounded to one "
+                  "decimal."),
         Spec(rid(221, "Q"), "Q = a + w_λ + β1 when λ², R² ≪ a²", src(70, "221"), "Q", derivation.Q_221,
              deps=(rid(45, "Q"), rid(214, "z"), rid(215, "zp"), rid(216, "K")), printed=printed.Q_221,
              defs=L_DEFINITION, readings=(READ_VW,),

@@ -94,7 +94,7 @@ def specs() -> tuple[Spec, ...]:
              derivation.growing((236, "factor")), deps=(rid(236, "factor"),),
              check=truth.increasing("the derived derivative of sh²u/(u + sh u ch u)")),
         Spec(rid(236, "value"), "(236) at u = 4 (\"elle vaut déjà 0,993\")", src(76, None), r"(236)_{u=4}",
-             derivation.value_236, deps=(rid(236, "factor"),), printed=printed.value_236,
+             derivation.value_236, deps=(rid(236, "factor"),), printed=printed.value_236, printed_decimals=3,
              check=truth.number_check(truth.suppleness_factor_truth, "λ/(2uG_2) at u = 4, G_2 of (79) at K = 1 by "
                                       "quadrature on the shot uniform blade"),
              note="The value is 0.99399…: the printed 0,993 is truncated, not rounded (0,994)."),
