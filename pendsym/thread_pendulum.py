@@ -28,18 +28,24 @@ import mpmath as mp
 
 @dataclass(frozen=True)
 class Pendulum:
-    """Thread length λ, AG = a, radius of gyration R, gravity g and the thread's mass ratio m'/m."""
+    """Thread length λ, AG = a, radius of gyration R, gravity g and the thread's mass ratio m'/m:
+    ``thread_mass`` in the kinetic energy, ``thread_weight`` in the weight (the same when None;
+    a perturbation study may switch one of them off)."""
 
     lam: object
     a: object
     R: object
     g: object
     thread_mass: object = 0
+    thread_weight: object = None
 
     def numbers(self) -> tuple:
-        """(λ, a, R, g, m'/m) as mpf at the working precision."""
-        return tuple(mp.mpf(x) if not isinstance(x, str) else mp.mpf(x)
-                     for x in (self.lam, self.a, self.R, self.g, self.thread_mass))
+        """(λ, a, R, g, m'/m in the inertia) as mpf at the working precision."""
+        return tuple(mp.mpf(x) for x in (self.lam, self.a, self.R, self.g, self.thread_mass))
+
+    def weight_ratio(self) -> mp.mpf:
+        """m'/m in the weight."""
+        return mp.mpf(self.thread_mass if self.thread_weight is None else self.thread_weight)
 
 
 # ---------------------------------------------------------------- energies from the positions
@@ -62,9 +68,9 @@ def kinetic_energy(p: Pendulum, theta, psi, dtheta, dpsi) -> mp.mpf:
 
 def potential_energy(p: Pendulum, theta, psi) -> mp.mpf:
     """V = m g y_G + m' g y_(middle of the thread), m = 1 (zero at O)."""
-    _lam, _a, _R, g, mu = p.numbers()
+    g = p.numbers()[3]
     _xA, yA, _xG, yG = positions(p, theta, psi)
-    return g * yG + mu * g * yA / 2
+    return g * yG + p.weight_ratio() * g * yA / 2
 
 
 # ---------------------------------------------------------------- exact equations of motion
@@ -80,12 +86,13 @@ def accelerations(p: Pendulum, theta, psi, dtheta, dpsi) -> tuple:
 
     d/dt ∂T/∂q' − ∂T/∂q = −∂V/∂q with T of :func:`mass_matrix`:
     (R² + a²)θ'' + aλ cos(θ − ψ)ψ'' + aλ sin(θ − ψ)ψ'² + g a sin θ = 0,
-    λ²(1 + μ/3)ψ'' + aλ cos(θ − ψ)θ'' − aλ sin(θ − ψ)θ'² + gλ(1 + μ/2) sin ψ = 0.
+    λ²(1 + μ/3)ψ'' + aλ cos(θ − ψ)θ'' − aλ sin(θ − ψ)θ'² + gλ(1 + μ_w/2) sin ψ = 0
+    (μ = m'/m in the inertia, μ_w in the weight).
     """
-    lam, a, _R, g, mu = p.numbers()
+    lam, a, _R, g, _mu = p.numbers()
     s = a * lam * mp.sin(theta - psi)
     rhs = mp.matrix([-s * dpsi**2 - g * a * mp.sin(theta),
-                     s * dtheta**2 - g * lam * (1 + mu / 2) * mp.sin(psi)])
+                     s * dtheta**2 - g * lam * (1 + p.weight_ratio() / 2) * mp.sin(psi)])
     acc = mp.lu_solve(mass_matrix(p, theta, psi), rhs)
     return acc[0], acc[1]
 
@@ -101,11 +108,15 @@ class Mode:
     z: mp.mpf
 
 
-def linear_modes(p: Pendulum) -> tuple:
-    """The modes of V q = n² 𝕋 q at rest, sorted by n² (one mode when R = 0)."""
-    lam, a, R, g, mu = p.numbers()
-    T0 = mass_matrix(p, 0, 0)
-    V0 = mp.matrix([[g * a, 0], [0, g * lam * (1 + mu / 2)]])      # the Hessian of V at rest
+def rest_matrices(p: Pendulum) -> tuple:
+    """(𝕋, V): the mass matrix and the Hessian of V at rest."""
+    lam, a, _R, g, _mu = p.numbers()
+    return mass_matrix(p, 0, 0), mp.matrix([[g * a, 0], [0, g * lam * (1 + p.weight_ratio() / 2)]])
+
+
+def squared_pulsations(p: Pendulum) -> list:
+    """The roots n² of det(V − n²𝕋) = 0, sorted (one root when R = 0)."""
+    T0, V0 = rest_matrices(p)
     # det(V − x T) = det T · x² − (V00 T11 + V11 T00 − 2 V01 T01)·x + det V
     coeffs = [T0[0, 0] * T0[1, 1] - T0[0, 1] ** 2, -(V0[0, 0] * T0[1, 1] + V0[1, 1] * T0[0, 0]),
               V0[0, 0] * V0[1, 1]]
@@ -114,8 +125,15 @@ def linear_modes(p: Pendulum) -> tuple:
         roots = [-coeffs[2] / coeffs[1]]
     else:
         roots = sorted(mp.re(r) for r in mp.polyroots(coeffs, maxsteps=200, extraprec=2 * mp.mp.prec))
+    return roots
+
+
+def linear_modes(p: Pendulum) -> tuple:
+    """The modes of V q = n² 𝕋 q at rest, sorted by n² (one mode when R = 0)."""
+    lam, a = p.numbers()[:2]
+    T0, V0 = rest_matrices(p)
     out = []
-    for x in roots:
+    for x in squared_pulsations(p):
         # first row: (V00 − x T00) θ − x T01 ψ = 0
         ratio = (V0[0, 0] - x * T0[0, 0]) / (x * T0[0, 1])
         out.append(Mode(x, ratio, -lam * ratio - a))
