@@ -2,7 +2,7 @@
 and chapter III, the uniform blade (eqs. (156)–(183))."""
 from pendsym.memoir import Memoir, Section, headings_by
 
-from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform, ch4_thread
+from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform, ch4_thread, ch5_point
 
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
@@ -12,11 +12,13 @@ CHAPTER_1 = (
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
 SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
-CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
+CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),
+             Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(210)"))
 SECTIONS = SECTIONS + CHAPTER_4
 _CH1 = {sec.module for sec in CHAPTER_1}
 _CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):len(SECTIONS) - len(CHAPTER_4)]}
-_CH4 = {sec.module for sec in CHAPTER_4}
+_CH4 = {CHAPTER_4[0].module}
+_CH5 = {CHAPTER_4[1].module}
 
 
 def _eqs(lo: int, hi: int, modules: set):
@@ -42,6 +44,7 @@ MEMOIR = Memoir(
         ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
         ("Chapter IV. The thread: limits u → ∞ and the direct study (184)–(197)", _eqs(0, 999, _CH4)),
+        ("Chapter V. Point pendulum, point mass, equal periods, beats (198)–(210)", _eqs(0, 999, _CH5)),
     )),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
