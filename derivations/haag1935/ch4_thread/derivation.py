@@ -61,6 +61,60 @@ def I_J_limits(deps) -> sp.Tuple:
     return sp.Tuple(at_infinity(derived_of(deps, 182, "I")), at_infinity(derived_of(deps, 183, "J")))
 
 
+SIGMA = sp.Symbol("sigma", positive=True)       # s = σλ, 0 < σ < 1
+P_SMALL, Q_SMALL, W_SMALL = sp.symbols("p q w_u", positive=True)   # e^{−σu}, e^{−(1−σ)u}, 1/u
+
+
+def inner_limit(expr: sp.Expr) -> sp.Expr:
+    """lim u → ∞ at s = σλ, 0 < σ < 1: every e^{(c0 + c1σ)u} is written (pq)^{−c0}p^{−c1} with
+    p = e^{−σu}, q = e^{−(1−σ)u} (pq = e^{−u}), u = 1/w; the rational function of p, q, w is then
+    taken at p = q = w = 0, which all tend to zero."""
+    s_symbol = next(x for x in expr.free_symbols if x.name == "s")
+    expr = sp.expand(sp.sympify(expr).rewrite(sp.exp).subs(s_symbol, SIGMA * lam))
+
+    def power(arg):
+        arg = sp.expand(arg)
+        c = sp.Poly(arg, u).all_coeffs()
+        if len(c) != 2 or c[1] != 0:
+            raise ValueError(f"exponent {arg} is not linear in u")
+        slope = sp.Poly(c[0], SIGMA)
+        c1 = slope.coeff_monomial(SIGMA)
+        c0 = slope.coeff_monomial(1)
+        return (P_SMALL * Q_SMALL) ** (-c0) * P_SMALL ** (-c1)
+    rational = sp.cancel(sp.powsimp(expr.replace(sp.exp, power), force=True).subs(u, 1 / W_SMALL))
+    numerator, denominator = sp.fraction(rational)
+    at_zero = {P_SMALL: 0, Q_SMALL: 0, W_SMALL: 0}
+    if denominator.subs(at_zero) == 0:
+        raise ValueError("the limit is not read off at p = q = w = 0")
+    return sp.simplify(numerator.subs(at_zero) / denominator.subs(at_zero))
+
+
+def along_limits(deps) -> sp.Tuple:
+    """n°58: lim of v, w (157) and φ1, φ2 (158) at an inner point s = σλ, 0 < σ < 1."""
+    return sp.Tuple(*(inner_limit(derived_of(deps, eq, name)) for eq, name in
+                      ((157, "v"), (157, "w"), (158, "phi1"), (158, "phi2"))))
+
+
+def shape_limit(deps) -> sp.Expr:
+    """n°59: y = (λ/u)·ωy of (171) as u → ∞ at an inner point s = σλ: Yσλ = Ys, a straight line."""
+    omega_y = derived_of(deps, 171, "shape")
+    s_symbol = next(x for x in omega_y.free_symbols if x.name == "s")
+    return inner_limit(lam / u * omega_y).subs(SIGMA, s_symbol / lam)
+
+
+def footnote_limits(deps) -> sp.Tuple:
+    """Footnote of (192): P_λ = (Kvλ + wλ)²/M (59) with (159), M = λ²/u² (156), and ∫P ds = G_2 (79)
+    by (184) with n = 2, as u → ∞."""
+    P_lambda = (K * derived_of(deps, 159, "vl") + derived_of(deps, 159, "wl")) ** 2 / (lam**2 / u**2)
+    G2 = derived_of(deps, 184, "Gn").subs(n, 2)
+    return sp.Tuple(sp.factor(at_infinity(P_lambda)), sp.limit(G2, u, sp.oo))
+
+
+def Q_thread(deps) -> sp.Expr:
+    """(197): Q = a − a1 + K²β1 (45) with a1 → 0 (n°59) and β1 → λ (n°58)."""
+    return a - derived_of(deps, 41, "thread") + K**2 * derived_of(deps, 184, "ends")[4]
+
+
 def end_stress_limits(deps) -> sp.Tuple:
     """n°59: T'_0/√(3ET) = YΓ_0 and T'_λ/√(3ET) = YΓ_λ of (175)–(177) as u → ∞."""
     Y = sp.Symbol("Y", real=True)
@@ -199,11 +253,11 @@ def thread_defs() -> tuple:
 
 
 def period_differentials(deps) -> sp.Tuple:
-    """(192): 2Q dT/T with T = 2π/n, n² of (34) for the thread, Q = a + λK²:
+    """(192): 2Q dT/T with T = 2π/n, n² of (34) for the thread, Q of (197):
     the coefficients of dR/R, da and dλ."""
     n2 = derived_of(deps, 192, "n2")
     log_T = -sp.log(n2) / 2
-    Q = a + lam * K**2
+    Q = derived_of(deps, 197, "Q")
     return sp.Tuple(*(2 * Q * c for c in (R * sp.diff(log_T, R), sp.diff(log_T, a), sp.diff(log_T, lam))))
 
 

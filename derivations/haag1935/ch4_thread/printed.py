@@ -128,3 +128,22 @@ def weight_acceleration():
 
 def weight_period():
     return -(mb / m) * lam * K**2 / (4 * (a + lam * K**2))
+
+
+def along():
+    """n°58: v, w → 0 and φ1 → 1, φ2 → 0 at s inside (0, λ)."""
+    return sp.Tuple(0, 0, 1, 0)
+
+
+def shape():
+    Y = sp.Symbol("Y", real=True)
+    return Y * sp.Symbol("s", real=True)
+
+
+def footnote():
+    """Footnote of (192): P_λ → (1 − K)², the integral of (58) → 0."""
+    return sp.Tuple((1 - K) ** 2, 0)
+
+
+def Q_thread():
+    return a + lam * K**2

@@ -51,8 +51,12 @@ def large_u(param: str):
 
 
 def blade_env(u_text: str, K_text: str = "0.83") -> dict:
-    return {"u": mp.mpf(u_text), "lambda": blade_truth.as_mpf(blade_truth.LAMBDA_VALUE), "K": mp.mpf(K_text),
-            "m'": mp.mpf(1), "Y": mp.mpf("0.7"), "theta": mp.mpf("1.3"), "n": 0}
+    lam = blade_truth.as_mpf(blade_truth.LAMBDA_VALUE)
+    return {"u": mp.mpf(u_text), "lambda": lam, "K": mp.mpf(K_text), "m'": mp.mpf(1), "Y": mp.mpf("0.7"),
+            "theta": mp.mpf("1.3"), "n": 0, "s": INNER * lam}
+
+
+INNER = mp.mpf("0.3")        # the inner point s = 0.3λ of the limits along the blade
 
 
 def limit_order(quantity, param: str, what: str, component: int | None = None, scale=None,
@@ -134,6 +138,31 @@ def I_J_check() -> checks.All:
                                    component=0),
                        limit_order(lambda sol, env: sol.weight_integral(env["K"]), "1/u", "J by quadrature (n°37)",
                                    component=1)))
+
+
+def along_check() -> checks.All:
+    """v, w, φ1, φ2 of the shot blade at s = 0.3λ: they reach their limits like e^{−0.3u} (v, φ1: the
+    distance to O) or e^{−0.7u} (w, φ2: the distance to A)."""
+    names = ("v", "w", "phi1", "phi2")
+    return checks.All(tuple(
+        limit_order(lambda sol, env, name=name: getattr(sol, name)(env["s"]), "exp(-u)",
+                    f"{name}(0.3λ) of the shot blade", component=i,
+                    expected=float(INNER if name in ("v", "phi1") else 1 - INNER))
+        for i, name in enumerate(names)))
+
+
+def shape_check() -> checks.Order:
+    """y = Y(s + v − v0) + θ(w − w0) (77) of the shot blade at s = 0.3λ."""
+    return limit_order(lambda sol, env: sol.y(env["s"], env["Y"], env["theta"]), "1/u",
+                       "y(0.3λ) of the shot blade (77), Y = 0.7, θ = 1.3")
+
+
+def footnote_check() -> checks.All:
+    """P_λ = (Kvλ + wλ)²/M with the shot ends, and G_2 = ∫P ds by quadrature (79)."""
+    P_lambda = limit_order(lambda sol, env: (env["K"] * sol.vl + sol.wl) ** 2 / (env["lambda"] / env["u"]) ** 2,
+                           "exp(-u)", "(Kvλ + wλ)²/M of the shot blade", component=0)
+    G2 = limit_order(lambda sol, env: sol.G(2, env["K"]), "1/u", "G_2 by quadrature of (79)", component=1)
+    return checks.All((P_lambda, G2))
 
 
 def end_stress_check() -> checks.All:

@@ -11,7 +11,9 @@ import sympy as sp
 from .. import ch1_model
 from ..common import rid
 from ..symbols import R, a, beta, beta1, g, lam, theta, u, v0, vl, w0, wl, z, zp
-from .symbols import eps, rho
+from .symbols import R0, a0, eps, rho
+
+KAPPA = sp.Symbol("kappa", real=True)      # R = R0(1 + κε) near the condition (205)
 
 BETA1 = lam + vl - v0                              # (22)
 WRONSKIAN = {wl: w0 - vl}                          # (16): w0 = vλ + wλ
@@ -146,3 +148,15 @@ def beat_frequency(deps) -> sp.Expr:
     roots = sp.solve(derived_of(deps, 208, "quadratic"), z)
     z_plus, z_minus = sorted(roots, key=lambda r: sp.N(r.subs({rho: sp.Rational(1, 3), R: 1})), reverse=True)
     return sp.simplify(sp.expand(F_prime - F).subs({z: z_plus, zp: z_minus}))
+
+
+def rho_near_equal_periods(deps) -> sp.Expr:
+    """(211): ρ of (207) with a = vλ + εR (207), wλ = w0 − vλ (16), λ = β1 − vλ + v0 (22), w0 = R0²/β1 (205),
+    and R = R0(1 + κε): its term of order ε⁰ is −κ + β1/(2R0); to that order κ = (R − R0)/(a − a0)."""
+    expr = derived_of(deps, 207, "rho")
+    expr = expr.subs(a, vl + eps * R).subs(wl, w0 - vl).subs(lam, beta1 - vl + v0)
+    expr = sp.simplify(expr.subs(w0, R0**2 / beta1).subs(R, R0 * (1 + KAPPA * eps)))
+    leading = sp.simplify(sp.series(expr, eps, 0, 1).removeO())
+    if KAPPA not in leading.free_symbols:
+        raise ValueError("the leading term does not depend on R − R0")
+    return sp.expand(leading.subs(KAPPA, (R - R0) / (a - a0)))

@@ -6,7 +6,7 @@ import sympy as sp
 from pendsym.result import Reading
 
 from ..symbols import E, R, a, beta, beta1, e, g, h, lam, m, theta, u, v0, vl, w0, wl, z, zp
-from .symbols import F0, eps, n0, rho
+from .symbols import F0, R0, a0, eps, n0, rho
 
 READ_V0_IN_204 = Reading("R²θ'' = −gν0θ; R0 = √(β1ν0)",
                          "as shown, ν0 = v0 (the OCR's ν for Haag's v); the derivation gives w0, which (211)'s "
@@ -84,3 +84,12 @@ def beat_frequency():
 _BETA1_POSITIVE = sp.Symbol(beta1.name, positive=True)
 FREQUENCY_DEFS = ((F0, sp.sqrt(g / _BETA1_POSITIVE) / (2 * sp.pi)), (n0, sp.sqrt(g / _BETA1_POSITIVE)),
                   (beta1, _BETA1_POSITIVE))
+
+
+def rho_near_equal_periods():
+    """(211), ω0 read as w0."""
+    return (R0 - R) / (a - a0) + sp.sqrt(beta1 / w0) / 2
+
+
+_POSITIVE = {sym: sp.Symbol(sym.name, positive=True) for sym in (beta1, w0)}
+RHO_211_DEFS = ((R0, sp.sqrt(_POSITIVE[beta1] * _POSITIVE[w0])), (beta1, _POSITIVE[beta1]), (w0, _POSITIVE[w0]))

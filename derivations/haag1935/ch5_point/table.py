@@ -61,4 +61,8 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(210, "f"), "Beat frequency f = F' − F", src(67, "210"), "f", derivation.beat_frequency,
              deps=(rid(209, "F"), rid(208, "quadratic")), printed=printed.beat_frequency,
              defs=printed.FREQUENCY_DEFS, check=truth.beat_time_domain()),
+        Spec(rid(211, "rho"), "ρ near equal periods", src(67, "211"), r"\rho", derivation.rho_near_equal_periods,
+             deps=(rid(207, "rho"),), printed=printed.rho_near_equal_periods, defs=printed.RHO_211_DEFS,
+             readings=(READ_VW,), check=truth.rho_order(),
+             note="a0 = vλ, the critical value (202); R0 = √(β1w0) (205, derived)."),
     )

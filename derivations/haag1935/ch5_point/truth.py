@@ -253,7 +253,8 @@ def beat_env(eps, dps: int) -> dict:
     R = R0 * (1 + KAPPA * eps)
     a = env["v_lambda"] + eps * R
     principal, other = principal_and_parasitic(profiles.direct_blade(BEAT_BLADE, dps), a, R, env["g"])
-    env.update(a=a, R=R, varepsilon=eps, z=other[1], **{"z'": principal[1]}, rho=-(principal[1] + other[1]) / (2 * R))
+    env.update(a=a, R=R, varepsilon=eps, z=other[1], **{"z'": principal[1]}, rho=-(principal[1] + other[1]) / (2 * R),
+               a_0=env["v_lambda"], R_0=R0)
     env["principal"], env["parasitic"] = principal[0], other[0]
     return env
 
@@ -304,3 +305,12 @@ def beat_time_domain() -> checks.Order:
                         "integrated by mpmath odefun over π/(2n0), the pulsations from the eigenvalues e^{±iωt} of "
                         "its flow map; f = (ω' − ω)/2π near a = vλ, R = √(β1w0) (a = a0 + εR, R = R0(1 + 0.7ε))")
 
+
+
+def rho_order() -> checks.Order:
+    """ρ = −(z + z')/(2R) of the nodes near the conditions (202), (205)."""
+    return checks.Order(param="ε", values=lambda level: verify.geometric("0.002", "0.02", 4),
+                        truth=lambda eps, dps: beat_env(eps, dps)["rho"],
+                        at=lambda expr, eps: verify.value_at(expr, beat_env(eps, 30)), expected=1.0,
+                        truth_desc=f"{POINT}: ρ = −(z + z')/(2R) from the nodes near a = vλ, R = √(β1w0) "
+                                   "(a = a0 + εR, R = R0(1 + 0.7ε); uniform blade)")
