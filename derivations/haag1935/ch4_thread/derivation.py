@@ -261,6 +261,21 @@ def period_differentials(deps) -> sp.Tuple:
     return sp.Tuple(*(2 * Q * c for c in (R * sp.diff(log_T, R), sp.diff(log_T, a), sp.diff(log_T, lam))))
 
 
+def period_differentials_of_58(deps) -> sp.Tuple:
+    """n°59: (58) of chapter I at the limit u → ∞: vλ, wλ, β1 of (159), M_λ = λ²/u² (156); its integral
+    ∫εP ds is bounded by max|ε|·G_2, and G_2 → 0 (footnote of (192)). Returned as 2Q times the
+    coefficients of dR/R, da, dλ, Q = a + wλ + K²β1 (45) at the same limit."""
+    from ..symbols import M_lambda, da, dlambda, dlog_R
+    if derived_of(deps, 192, "footnote")[1] != 0:
+        raise ValueError("G_2 does not vanish at the limit")
+    expr = derived_of(deps, 58, "dT").replace(lambda x: isinstance(x, sp.Integral), lambda x: sp.S.Zero)
+    ends = {vl: derived_of(deps, 159, "vl"), wl: derived_of(deps, 159, "wl"), beta1: derived_of(deps, 159, "beta1"),
+            M_lambda: lam**2 / u**2}
+    Q = a + wl + K**2 * beta1
+    scaled = sp.expand(sp.simplify((2 * Q * expr).subs(ends, simultaneous=True)))
+    return sp.Tuple(*(at_infinity(sp.simplify(scaled.coeff(d))) for d in (dlog_R, da, dlambda)))
+
+
 def sensitivity(deps) -> sp.Expr:
     """n°59, (62): G = 2(dT/T)/(dg/g) for the thread, from its n²."""
     return sp.simplify(2 * g * sp.diff(-sp.log(derived_of(deps, 192, "n2")) / 2, g))

@@ -94,6 +94,12 @@ def specs() -> tuple[Spec, ...]:
              r"2Q\,dT/T", derivation.period_differentials, deps=(rid(192, "n2"), rid(197, "Q")), printed=printed.period_differentials,
              defs=derivation.thread_defs(), check=truth.differential_check(),
              note="Q = a + λK² (197); K, z of the thread in terms of a, R, λ for the comparison."),
+        Spec(rid(192, "from_58"), "(58) of chapter I at the limit reduces to (192)", src(N59, "192"),
+             r"2Q\,dT/T", derivation.period_differentials_of_58,
+             deps=(rid(58, "dT"), rid(192, "footnote"), rid(159, "vl"), rid(159, "wl"), rid(159, "beta1")),
+             printed=printed.period_differentials, defs=derivation.thread_defs(), check=truth.differential_check(),
+             note="The derivation from (58) gives 2a(1 − K) for the coefficient of dR/R; it is 2Kz by (36) at the "
+                  "limit, z = a(1 − K)/K."),
         Spec(rid(192, "G"), "G = −1: the thread's sensitivity coefficient (62)", src(N59, "62"), "G",
              derivation.sensitivity, deps=(rid(192, "n2"),), printed=printed.sensitivity,
              check=truth.sensitivity_check()),
