@@ -14,7 +14,7 @@ ENGINE_KINDS = (checks.Values, checks.Order, checks.Inequality, checks.Proof, ch
 
 
 def test_ids_are_unique_and_registered():
-    assert len(IDS) == len(set(IDS)) == 16
+    assert len(IDS) == len(set(IDS)) == 17
     headed = {i for heading in MEMOIR.report_headings() if heading.title.startswith("Chapter V.") for i in heading.ids}
     assert headed == set(IDS)
 
@@ -34,7 +34,7 @@ def built():
 @pytest.mark.slow
 @pytest.mark.parametrize("rid", ["eq198.roots", "eq199.n2p", "eq200.n2", "eq200.thread", "eq201.n2", "eq201.elastic",
                                  "eq202.a0", "eq206.n0", "eq208.quadratic", "eq209.n2", "eq209.F", "eq210.f",
-                                 "eq211.rho"])
+                                 "eq211.rho", "eq198.dR"])
 def test_printed_matches_derived(built, rid):
     r = built[f"{P}.{rid}"]
     assert verify.compare_forms(r.printed_value, r.derived_value, r.id)[0] == "match"

@@ -276,6 +276,22 @@ def period_differentials_of_58(deps) -> sp.Tuple:
     return sp.Tuple(*(at_infinity(sp.simplify(scaled.coeff(d))) for d in (dlog_R, da, dlambda)))
 
 
+def period_differentials_of_44(deps) -> sp.Tuple:
+    """n°59: (44) of chapter I at the limit u → ∞.  A change dλ at fixed M changes the ends (159) by
+    dv = (∂v/∂λ)_M dλ with u = λ/√M; da and dR leave them alone.  Returned as 2Q times the
+    coefficients of dR/R, da, dλ, Q = a + wλ + K²β1 (45) at the limit."""
+    from ..symbols import da, dlambda, dlog_R, dv0, dvl, dwl, omega
+    ends = {vl: derived_of(deps, 159, "vl"), wl: derived_of(deps, 159, "wl"), beta1: derived_of(deps, 159, "beta1")}
+    differentials = {}
+    for symbol, name in ((dv0, "v0"), (dvl, "vl"), (dwl, "wl")):
+        at_fixed_M = derived_of(deps, 159, name).subs(u, lam * omega)
+        differentials[symbol] = sp.diff(at_fixed_M, lam).subs(omega, u / lam) * dlambda
+    Q = a + wl + K**2 * beta1
+    expr = (2 * Q * derived_of(deps, 44, "dT")).subs(differentials).subs(ends, simultaneous=True)
+    scaled = sp.expand(sp.simplify(expr))
+    return sp.Tuple(*(at_infinity(sp.simplify(scaled.coeff(d))) for d in (dlog_R, da, dlambda)))
+
+
 def sensitivity(deps) -> sp.Expr:
     """n°59, (62): G = 2(dT/T)/(dg/g) for the thread, from its n²."""
     return sp.simplify(2 * g * sp.diff(-sp.log(derived_of(deps, 192, "n2")) / 2, g))

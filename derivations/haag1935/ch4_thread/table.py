@@ -100,6 +100,11 @@ def specs() -> tuple[Spec, ...]:
              printed=printed.period_differentials, defs=derivation.thread_defs(), check=truth.differential_check(),
              note="The derivation from (58) gives 2a(1 − K) for the coefficient of dR/R; it is 2Kz by (36) at the "
                   "limit, z = a(1 − K)/K."),
+        Spec(rid(192, "from_44"), "(44) of chapter I at the limit reduces to (192)", src(N59, "192"),
+             r"2Q\,dT/T", derivation.period_differentials_of_44,
+             deps=(rid(44, "dT"), rid(159, "v0"), rid(159, "vl"), rid(159, "wl"), rid(159, "beta1")),
+             printed=printed.period_differentials, defs=derivation.thread_defs(), check=truth.differential_check(),
+             note="dv0, dvλ, dwλ = (∂/∂λ)_M of (159) dλ, which vanish as u → ∞."),
         Spec(rid(192, "G"), "G = −1: the thread's sensitivity coefficient (62)", src(N59, "62"), "G",
              derivation.sensitivity, deps=(rid(192, "n2"),), printed=printed.sensitivity,
              check=truth.sensitivity_check()),

@@ -160,3 +160,11 @@ def rho_near_equal_periods(deps) -> sp.Expr:
     if KAPPA not in leading.free_symbols:
         raise ValueError("the leading term does not depend on R − R0")
     return sp.expand(leading.subs(KAPPA, (R - R0) / (a - a0)))
+
+
+def first_term_of_58(deps) -> sp.Expr:
+    """n°64: the coefficient of dR/R in (58) of chapter I with K of (36) at z = 0 (198): it vanishes."""
+    from ..symbols import dlog_R
+    expr = sp.expand(derived_of(deps, 58, "dT"))
+    coefficient = expr.coeff(dlog_R)
+    return sp.simplify(coefficient.subs(sp.Symbol("K", real=True), ch1_model.K_of_z().subs(z, derived_of(deps, 198, "roots")[0])))

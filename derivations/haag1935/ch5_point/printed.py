@@ -93,3 +93,8 @@ def rho_near_equal_periods():
 
 _POSITIVE = {sym: sp.Symbol(sym.name, positive=True) for sym in (beta1, w0)}
 RHO_211_DEFS = ((R0, sp.sqrt(_POSITIVE[beta1] * _POSITIVE[w0])), (beta1, _POSITIVE[beta1]), (w0, _POSITIVE[w0]))
+
+
+def first_term_of_58():
+    """n°64: "dans la formule (58), il faut supprimer le premier terme du second membre"."""
+    return sp.S.Zero

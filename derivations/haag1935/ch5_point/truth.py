@@ -314,3 +314,18 @@ def rho_order() -> checks.Order:
                         at=lambda expr, eps: verify.value_at(expr, beat_env(eps, 30)), expected=1.0,
                         truth_desc=f"{POINT}: ρ = −(z + z')/(2R) from the nodes near a = vλ, R = √(β1w0) "
                                    "(a = a0 + εR, R = R0(1 + 0.7ε); uniform blade)")
+
+
+def log_period_R_order() -> checks.Order:
+    """R ∂log T/∂R of the principal mode as R → 0 (mpmath diff of its n², uniform blade, clock pendulum)."""
+    name, pend = "uniform", "clock"
+
+    def truth(R, dps):
+        env = env_of(name, pend, dps)
+        sus = profiles.direct_blade(name, dps)
+        return R * mp.diff(lambda x: -mp.log(principal_and_parasitic(sus, env["a"], x, env["g"])[0][0]) / 2, R)
+
+    def at(expr, R):
+        return verify.value_at(expr, env_of(name, pend, R=R))
+    return checks.Order(param="R", values=lambda level: verify.geometric("0.0005", "0.004", 4), truth=truth, at=at,
+                        expected=2.0, truth_desc=f"{POINT}: R ∂log T/∂R of the principal mode (mpmath diff) as R → 0")
