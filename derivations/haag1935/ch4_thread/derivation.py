@@ -11,7 +11,7 @@ import sympy as sp
 
 from .. import ch1_model
 from ..common import rid
-from ..symbols import K, Gam, R, a, beta1, g, k, lam, m, mb, n, theta, theta_ddot, theta_dot, u, v0, vl, wl, z, zp
+from ..symbols import K, Gam, R, a, beta1, g, lam, m, mb, n, theta, theta_ddot, theta_dot, u, v0, vl, wl, z, zp
 from .symbols import psi, psi_ddot, psi_dot, theta0, time
 
 U_HALF = sp.Symbol("T_h", positive=True)       # th(u/2) while the limit is taken

@@ -2,13 +2,15 @@
 from __future__ import annotations
 
 import mpmath as mp
+import sympy as sp
 
-from pendsym import checks, thread_pendulum, verify
+from pendsym import checks, verify
 from pendsym.result import Spec
 
 from ..common import READ_VW, rid, src
-from ..symbols import Q, a, lam
+from ..symbols import theta_ddot
 from . import derivation, printed, truth
+from .symbols import psi_ddot
 
 CH3_ENDS = (rid(159, "v0"), rid(159, "vl"), rid(159, "w0"), rid(159, "wl"), rid(159, "beta1"), rid(159, "beta2"),
             rid(160, "U"), rid(160, "U1"), rid(160, "U2"))
@@ -24,9 +26,6 @@ def psi_acc(expr, env):
 
 
 def _solve_linear(expr, env):
-    import sympy as sp
-    from ..symbols import theta_ddot
-    from .symbols import psi_ddot
     rows = [sp.Poly(e, theta_ddot, psi_ddot) for e in expr]
     A = mp.matrix([[verify.value_at(r.coeff_monomial(v), env) for v in (theta_ddot, psi_ddot)] for r in rows])
     b = mp.matrix([-verify.value_at(r.coeff_monomial(1), env) for r in rows])
@@ -34,8 +33,6 @@ def _solve_linear(expr, env):
 
 
 def combination_acc(expr, env):
-    import sympy as sp
-    from ..symbols import theta_ddot
     return verify.value_at(sp.solve(expr, theta_ddot)[0], env)
 
 

@@ -10,7 +10,6 @@
 from __future__ import annotations
 
 import mpmath as mp
-import sympy as sp
 
 from pendsym import checks, thread_pendulum, verify
 
