@@ -12,13 +12,13 @@ CHAPTER_1 = (
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
 SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
-CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),
+CHAPTERS_4_5 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),
              Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(210)"))
-SECTIONS = SECTIONS + CHAPTER_4
+SECTIONS = SECTIONS + CHAPTERS_4_5
 _CH1 = {sec.module for sec in CHAPTER_1}
-_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):len(SECTIONS) - len(CHAPTER_4)]}
-_CH4 = {CHAPTER_4[0].module}
-_CH5 = {CHAPTER_4[1].module}
+_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):len(SECTIONS) - len(CHAPTERS_4_5)]}
+_CH4 = {CHAPTERS_4_5[0].module}
+_CH5 = {CHAPTERS_4_5[1].module}
 
 
 def _eqs(lo: int, hi: int, modules: set):
