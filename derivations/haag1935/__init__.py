@@ -13,7 +13,7 @@ CHAPTER_1 = (
 )
 SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
 CHAPTERS_4_5 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),
-             Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(210)"))
+                Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(211)"))
 SECTIONS = SECTIONS + CHAPTERS_4_5
 _CH1 = {sec.module for sec in CHAPTER_1}
 _CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):len(SECTIONS) - len(CHAPTERS_4_5)]}
@@ -44,7 +44,7 @@ MEMOIR = Memoir(
         ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
         ("Chapter IV. The thread: limits u → ∞ and the direct study (184)–(197)", _eqs(0, 999, _CH4)),
-        ("Chapter V. Point pendulum, point mass, equal periods, beats (198)–(210)", _eqs(0, 999, _CH5)),
+        ("Chapter V. Point pendulum, point mass, equal periods, beats (198)–(211)", _eqs(0, 999, _CH5)),
     )),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared

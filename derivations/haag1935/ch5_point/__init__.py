@@ -1,5 +1,5 @@
 """Haag 1935, chapter V, n°64–67: the point pendulum (R = 0), a point mass at the end of the blade,
-equal periods and beats, (198)–(210).
+equal periods and beats, (198)–(211).
 
 * :mod:`.derivation`: from chapter I's (25)–(26), (30), (34)–(35) (:mod:`..ch1_model`) and
   chapter III's derived end values (by id);

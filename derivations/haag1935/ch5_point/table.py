@@ -1,4 +1,4 @@
-"""Haag 1935, chapter V, n°64–67: the point pendulum, the point mass at the end of the blade, beats, (198)–(210)."""
+"""Haag 1935, chapter V, n°64–67: the point pendulum, the point mass at the end of the blade, beats, (198)–(211)."""
 from __future__ import annotations
 
 from pendsym import checks
