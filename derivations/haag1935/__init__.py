@@ -6,7 +6,7 @@ the report's headings group the Results of a chapter by equation number.
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
-from . import ch6_short_blade, ch9_holes
+from . import ch4_thread, ch5_point, ch6_short_blade, ch9_holes
 
 
 def _of(package) -> tuple[Section, ...]:
@@ -23,9 +23,11 @@ CHAPTER_1 = (
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
 CHAPTER_3 = _of(ch3_uniform)
+CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
+CHAPTER_5 = (Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(211)"),)
 CHAPTER_6 = _of(ch6_short_blade)
 CHAPTER_9 = _of(ch9_holes)
-SECTIONS = CHAPTER_1 + CHAPTER_3 + CHAPTER_6 + CHAPTER_9
+SECTIONS = CHAPTER_1 + CHAPTER_3 + CHAPTER_4 + CHAPTER_5 + CHAPTER_6 + CHAPTER_9
 
 
 def _eqs(lo: int, hi: int, chapter: tuple[Section, ...]):
@@ -45,6 +47,8 @@ HEADINGS = (
     ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, CHAPTER_3)),
     ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, CHAPTER_3)),
     ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, CHAPTER_3)),
+    ("Chapter IV. The thread: limits u → ∞ and the direct study (184)–(197)", _eqs(0, 999, CHAPTER_4)),
+    ("Chapter V. Point pendulum, point mass, equal periods, beats (198)–(211)", _eqs(0, 999, CHAPTER_5)),
     ("Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)", _eqs(212, 223, CHAPTER_6)),
     ("Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion (224)–(240)",
      _eqs(224, 240, CHAPTER_6)),
@@ -55,8 +59,9 @@ HEADINGS = (
 MEMOIR = Memoir(
     key="haag1935",
     title=("J. Haag, Théorie de la suspension élastique des pendules (1935): chapter I, first approximation "
-           "for any M(s), eqs. (1)–(87); chapter III, the uniform blade, eqs. (156)–(183); chapter VI, the "
-           "short blade, eqs. (212)–(240); chapter IX, blades with a hole, eqs. (321)–(346)"),
+           "for any M(s), eqs. (1)–(87); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
+           "the thread, the point pendulum and beats, eqs. (184)–(211); chapter VI, the short blade, "
+           "eqs. (212)–(240); chapter IX, blades with a hole, eqs. (321)–(346)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), HEADINGS),
     cost=2.0,
