@@ -1,8 +1,8 @@
-"""Haag 1935, Théorie de la suspension élastique des pendules: chapter I (any M(s), eqs. (1)–(87))
-and chapter III, the uniform blade (eqs. (156)–(183))."""
+"""Haag 1935, Théorie de la suspension élastique des pendules: chapter I (any M(s), eqs. (1)–(87)),
+chapter II (the second approximation, from (88)) and chapter III, the uniform blade (eqs. (156)–(183))."""
 from pendsym.memoir import Memoir, Section, headings_by
 
-from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
+from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
 
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
@@ -11,9 +11,13 @@ CHAPTER_1 = (
     Section.of(ch1_launch, "Chapter I. Principal oscillation and launching (64)–(76)"),
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
-SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
+CHAPTER_2 = (
+    Section.of(ch2_general, "Chapter II. General theory of perturbations and the isochronism error (88)–(114)"),
+)
+SECTIONS = CHAPTER_1 + CHAPTER_2 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
 _CH1 = {sec.module for sec in CHAPTER_1}
-_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):]}
+_CH2 = {sec.module for sec in CHAPTER_2}
+_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1) + len(CHAPTER_2):]}
 
 
 def _eqs(lo: int, hi: int, modules: set):
@@ -25,7 +29,8 @@ def _eqs(lo: int, hi: int, modules: set):
 MEMOIR = Memoir(
     key="haag1935",
     title=("J. Haag, Théorie de la suspension élastique des pendules (1935), chapter I: first approximation "
-           "for any M(s), eqs. (1)–(87); chapter III: the uniform blade, eqs. (156)–(183)"),
+           "for any M(s), eqs. (1)–(87); chapter II: second approximation, eqs. (88)–(114); chapter III: the "
+           "uniform blade, eqs. (156)–(183)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), (
         ("Chapter I. The equations and the functions v, w for any M(s) (1)–(20)", _eqs(1, 20, _CH1)),
@@ -33,6 +38,8 @@ MEMOIR = Memoir(
         ("Chapter I. Small variations of the periods, temperature, g (42)–(63)", _eqs(42, 63, _CH1)),
         ("Chapter I. Principal oscillation, launching, shape, fatigue, suppleness, fork (64)–(87)",
          _eqs(64, 87, _CH1)),
+        ("Chapter II. General theory of perturbations: f, ΔX, ΔY, ΔN (88)–(105)", _eqs(88, 105, _CH2)),
+        ("Chapter II. The isochronism error and the classical formula (106)–(114)", _eqs(106, 114, _CH2)),
         ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, _CH3)),
         ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, _CH3)),
         ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, _CH3)),
