@@ -1,6 +1,5 @@
 """The exact (large-deflection) blade carrying a rigid pendulum: its elastica, its two limits, convergence."""
 import mpmath as mp
-import pytest
 import sympy as sp
 
 from pendsym import blade as B
@@ -13,7 +12,7 @@ CLOCK = ("0.9", "0.08", "9.81")
 def test_elastica_straight_under_tension():
     """No transverse load, no clamping couple: the blade stays straight, α = λ, β = θ = N = 0."""
     end = nb.end_state(UNIFORM, 1, 0, 0, 30)
-    assert end.alpha == pytest.approx(0.1, abs=1e-28)
+    assert abs(end.alpha - mp.mpf(1) / 10) < mp.mpf("1e-28")
     assert abs(end.beta) < 1e-40 and abs(end.theta) < 1e-40 and abs(end.N) < 1e-40
 
 
@@ -68,18 +67,19 @@ def test_collocation_converges_in_nodes_and_precision():
 
 
 def test_short_flexible_blade_is_a_rigid_compound_pendulum():
-    """λ → 0 with u = λ/√M fixed: the period tends to the exact period 4K(sin θ0/2)·√(L/g) of the rigid
-    pendulum pivoting at the clamp, L = (d² + R²)/d with d = λ + a (the AGM of mpmath's ellipk);
-    the discrepancy falls like λ."""
-    a, R, g, th = mp.mpf("0.2"), mp.mpf("0.05"), mp.mpf("9.81"), mp.mpf("0.3")
+    """λ → 0 with u = λ/√M fixed: the period tends to the exact period 4K(sin²(θ0/2))·√(L/g) of the rigid
+    pendulum pivoting at the clamp, L = (d² + R²)/d with d = λ + a (mpmath's ellipk, an AGM); the
+    discrepancy falls with λ (the blade's own length and bending length √M are what separate them)."""
+    a, R, g, th = mp.mpf("0.2"), mp.mpf("0.05"), mp.mpf("9.81"), mp.mpf("0.1")
     errs = []
-    for lam in (sp.Rational(1, 1000), sp.Rational(1, 10000)):
-        blade = B.Blade(lam, (lam / 10) ** 2)
-        with mp.workdps(40):
+    for lam in (sp.Rational(1, 500), sp.Rational(1, 5000)):
+        blade = B.Blade(lam, (lam / 3) ** 2)
+        with mp.workdps(30):
             d = a + mp.mpf(lam.p) / lam.q
             L = (d * d + R * R) / d
             rigid = 4 * mp.ellipk(mp.sin(th / 2) ** 2) * mp.sqrt(L / g)
-            T = nb.orbit(blade, a, R, g, th, 12, 30).period
+            T = nb.orbit(blade, a, R, g, th, 5, 20).period
             errs.append(abs(T / rigid - 1))
-    assert errs[0] < 2e-3
-    assert 5 < errs[0] / errs[1] < 20
+    # the amplitude effect itself is θ0²/16 ≈ 6e-4: the short blade must reproduce it
+    assert errs[1] < 1e-4
+    assert errs[1] < errs[0] / 5

@@ -47,6 +47,8 @@ MEMOIR = Memoir(
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
     )),
     cost=2.0,
+    # chapter II: (111) and (112) are judged by the same nonlinear periods (one worker, one solve each)
+    affinity=(ch2_general.PERIOD_RESULTS,),
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,
 )

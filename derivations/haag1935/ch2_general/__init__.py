@@ -4,6 +4,6 @@
 its readings), :mod:`.truth` (the exact large-deflection blade of :mod:`pendsym.nonlinear_blade`, the rigid
 pendulum's exact period, the exact trigonometric terms), :mod:`.table` (the Results).
 """
-from .table import specs
+from .table import PERIOD as PERIOD_RESULTS, specs
 
-__all__ = ["specs"]
+__all__ = ["specs", "PERIOD_RESULTS"]
