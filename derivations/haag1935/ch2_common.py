@@ -15,7 +15,7 @@ from .symbols import K, Y, theta, varphi1_s, varphi2_s
 
 eps1, eps2, eps3 = sp.symbols("epsilon_1 epsilon_2 epsilon_3", real=True)   # mgε1, mgε2, mgε3 (n°26)
 eps_blade = sp.Symbol("epsilon'", real=True)      # increment of d(Mφ')/ds (ε' = dε/ds, (94), (106))
-eps_bar = sp.Symbol("bar_epsilon", real=True)     # ε̄ = φε1 + ε' (94) (printed ε)
+eps_bar = sp.Symbol("bar_epsilon", real=True)     # ε_bar = φε1 + ε' (94) (printed ε)
 eps_lambda = sp.Symbol("epsilon_lambda", real=True)   # ε at s = λ: increment of the couple (102)
 dX, dY, dN = sp.symbols("Delta_X Delta_Y Delta_N", real=True)                # corrections of X, Y, N (n°26)
 f_acc = sp.Symbol("f", real=True)                 # perturbing acceleration of the canonical variable (91)

@@ -128,7 +128,7 @@ def eq93() -> sp.Expr:
 
 
 def eq94() -> sp.Expr:
-    """(94): ε̄ = φε1 + ε' (by (92))."""
+    """(94): ε_bar = φε1 + ε' (by (92))."""
     from ..symbols import varphi
     return sp.expand(eq93().subs(dY, 0).subs(dX, eq92()).subs(varphi(s), sp.Symbol("varphi", real=True)))
 
@@ -154,12 +154,12 @@ def green_identities() -> tuple[sp.Expr, sp.Expr]:
 
 def Delta_Y(beta_cubic: sp.Expr = sp.S.Zero) -> sp.Expr:
     """(101): ∫(93)·φ1 ds = [Mx'φ1 − Mφ1'x]_0^λ − ∫x ds; x(0) = x(λ) = 0, φ1(0) = φ1(λ) = 0 (10), and
-    ∫x ds = ``beta_cubic`` (0 in n°27, ∫φ³/6 ds in n°29, β being given): ΔY∫φ1 = ∫ε̄φ1 + ∫x.
-    ∫φ1 ds = β1 (22); ∫ε̄φ1 ds is kept as the symbol I_1."""
+    ∫x ds = ``beta_cubic`` (0 in n°27, ∫φ³/6 ds in n°29, β being given): ΔY∫φ1 = ∫ε_barφ1 + ∫x.
+    ∫φ1 ds = β1 (22); ∫ε_barφ1 ds is kept as the symbol I_1."""
     adj1, _ = green_identities()
-    I1 = sp.Symbol("I_1")                      # ∫ε̄φ1 ds
+    I1 = sp.Symbol("I_1")                      # ∫ε_barφ1 ds
     int_phi1 = ch1_model.beta1_def()           # ∫φ1 ds = λ + vλ − v0
-    # ∫(ε̄ − ΔY)φ1 = boundary (0) + adj1·∫x
+    # ∫(ε_bar − ΔY)φ1 = boundary (0) + adj1·∫x
     eq = sp.Eq(I1 - dY * beta1, adj1 * beta_cubic)
     assert sp.simplify(int_phi1 - (lam + ch1_model.ends(v(lam)) - ch1_model.ends(v(0)))) == 0
     return sp.solve(eq, dY)[0]
@@ -167,7 +167,7 @@ def Delta_Y(beta_cubic: sp.Expr = sp.S.Zero) -> sp.Expr:
 
 def Delta_N() -> sp.Expr:
     """(102): ∫(93)·φ2 ds = [Mx'φ2 − Mφ2'x]_0^λ = M_λx'_λ (φ2(0) = 0, φ2(λ) = 1), (Mφ2')' − φ2 = 0, and
-    M_λx'_λ = ΔN + ε_λ ((2) at s = λ); ∫φ2 = −vλ ((22) reduced by (16)); ∫ε̄φ2 ds kept as I_2."""
+    M_λx'_λ = ΔN + ε_λ ((2) at s = λ); ∫φ2 = −vλ ((22) reduced by (16)); ∫ε_barφ2 ds kept as I_2."""
     _, adj2 = green_identities()
     assert adj2 == 0
     I2 = sp.Symbol("I_2")
@@ -178,7 +178,7 @@ def Delta_N() -> sp.Expr:
 # ================================================================ n°28: (104)
 def eq104_bracket(beta_cubic: sp.Expr = sp.S.Zero) -> sp.Expr:
     """(104): f = −(n²/K)[…]: (91) with ΔX (92), ΔY (101), ΔN (102), a + z' − vλ = −Kβ1 (35) and
-    g/z' = −n²/K (34); returns the bracket, with ∫ε̄φ1 = I_1, ∫ε̄φ2 = I_2."""
+    g/z' = −n²/K (34); returns the bracket, with ∫ε_barφ1 = I_1, ∫ε_barφ2 = I_2."""
     from ..symbols import vl
     f = eq91().subs({dN: Delta_N()}).subs({dY: Delta_Y(beta_cubic), dX: eq92()})
     f = sp.expand(f.subs(vl, a + zp + K * beta1))          # (35)
@@ -187,7 +187,7 @@ def eq104_bracket(beta_cubic: sp.Expr = sp.S.Zero) -> sp.Expr:
 
 
 def eq104() -> sp.Expr:
-    """(104): the bracket with ε̄ = φε1 + ε' (94): ∫ε̄φ_i = ε1∫φφ_i + E_i, E_i = ∫ε'φ_i ds, φ = Yφ1 + θφ2
+    """(104): the bracket with ε_bar = φε1 + ε' (94): ∫ε_barφ_i = ε1∫φφ_i + E_i, E_i = ∫ε'φ_i ds, φ = Yφ1 + θφ2
     (13) in moments."""
     E1, E2 = sp.symbols("E_1 E_2")
     I1 = eps1 * blade_integral(phi_s * varphi1_s) + E1
@@ -276,7 +276,7 @@ def euler_operator(expr: sp.Expr) -> sp.Expr:
 
 def eq109_bracket() -> sp.Expr:
     """(109): the bracket of (104) with the ε of (106), ε_λ = 0, and the term (K/6)H3 of n°29 (∫x ds =
-    ∫φ³/6 ds in (101)); ∫ε̄φ_i with ε̄ = φε1 + ε' in moments."""
+    ∫φ³/6 ds in (101)); ∫ε_barφ_i with ε_bar = φε1 + ε' in moments."""
     g1, g2, e3, cubic = eq106()
     cubic = cubic.subs(sp.Symbol("varphi", real=True), phi_s)
     I1 = blade_integral((phi_s * eps1 + cubic) * varphi1_s)

@@ -16,13 +16,13 @@ from ..symbols import (K, M_of_s, N, X, Y, a, beta1, g, lam, n_squared, s, theta
 from ..symbols import Fn
 
 READ_ZP = Reading("ε' (in ε2ε' of (104) and the line before)", "z' (the OCR renders z' as ε')")
-READ_EPS1_AS_4 = Reading("ε4 (in ½ε4(K∂H2/∂Y + ∂H2/∂θ))", "ε1 (ε̄ = φε1 + ε' gives ε1∫φ(Kφ1 + φ2) ds)")
+READ_EPS1_AS_4 = Reading("ε4 (in ½ε4(K∂H2/∂Y + ∂H2/∂θ))", "ε1 (ε_bar = φε1 + ε' gives ε1∫φ(Kφ1 + φ2) ds)")
 READ_EPS_PRIME = Reading("ε'_4 (in ∫ε'_4(Kφ1 + φ2) ds), ε4 in (106)",
                          "ε' = dε/ds, the increment of d(Mφ')/ds (the derivative of the moment increment mgε)",
                          certain=False)
 READ_EPS_LAMBDA = Reading("ε_{iλ}", "ε_λ, the increment of the couple at A (ε at s = λ)", certain=False)
 READ_94 = Reading("ε = φε1 + ε'_1, ε'_1 = dε1/ds (94)",
-                  "ε̄ = φε1 + ε', ε' = dε/ds: the right side of (93), with ε the moment increment of n°26",
+                  "ε_bar = φε1 + ε', ε' = dε/ds: the right side of (93), with ε the moment increment of n°26",
                   certain=False)
 READ_H4 = Reading("½ε4(K∂H4/∂Y + ∂H4/∂θ) in (109)", "½ε1(K∂H2/∂Y + ∂H2/∂θ), as in (104)")
 READ_107 = Reading("(Y'∂H2/∂Y + θ'∂H2/∂θ)²", "the operator (Y'∂/∂Y + θ'∂/∂θ) applied twice to H2 (a symbolic square)",
@@ -56,7 +56,7 @@ def eq92():
 
 
 def eq93():
-    """(93): the right side of d(Mx')/ds − x = ε − ΔY (ε of (94), here ε̄)."""
+    """(93): the right side of d(Mx')/ds − x = ε − ΔY (ε of (94), here ε_bar)."""
     return eps_bar - dY
 
 
@@ -65,7 +65,7 @@ def eq94():
 
 
 def eq101():
-    """(101) solved for ΔY: β1ΔY = ∫ε̄φ1 ds (I_1)."""
+    """(101) solved for ΔY: β1ΔY = ∫ε_barφ1 ds (I_1)."""
     return sp.Symbol("I_1") / beta1
 
 

@@ -40,17 +40,17 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(93, "x"), "d(Mx')/ds − x = ε − ΔY", src(27, "93"), r"\frac{d}{ds}(Mx') - x", step(derivation.eq93),
              printed=printed.eq93, readings=(READ_94,), check=THROUGH_PERIOD,
              defs=((eps_bar, varphi(s) * eps1 + eps_blade), (dX, eps1)),
-             note="(7) at the second order minus the first; ε of (94) (ε̄ here) and ΔX = ε1 (92) applied."),
+             note="(7) at the second order minus the first; ε of (94) (ε_bar here) and ΔX = ε1 (92) applied."),
         Spec(rid(94, "eps"), "ε = φε1 + ε'", src(27, "94"), r"\bar\varepsilon", step(derivation.eq94),
              printed=printed.eq94, readings=(READ_94,), check=checks.Definition(), definition=True),
         Spec(rid(101, "dY"), "β1ΔY = ∫εφ1 ds", src(27, "101"), r"\Delta Y", step(derivation.Delta_Y),
              printed=printed.eq101, readings=(READ_101,), check=THROUGH_PERIOD,
              note="Derived by the Green identity of (93) with φ1 = 1 + v' ((Mφ1')' − φ1 = −1, φ1 = 0 at both ends), "
-                  "not by Haag's variation of constants (95)–(100); I_1 = ∫ε̄φ1 ds."),
+                  "not by Haag's variation of constants (95)–(100); I_1 = ∫ε_barφ1 ds."),
         Spec(rid(102, "dN"), "ΔN = ∫εφ2 ds + vλΔY − ε_λ", src(27, "102"), r"\Delta N", step(derivation.Delta_N),
              printed=printed.eq102, readings=(READ_EPS_LAMBDA, READ_VW), check=THROUGH_PERIOD,
              note="Derived by the Green identity of (93) with φ2 = w' ((Mφ2')' = φ2; φ2(0) = 0, φ2(λ) = 1); "
-                  "I_2 = ∫ε̄φ2 ds."),
+                  "I_2 = ∫ε_barφ2 ds."),
         Spec(rid(103, "H"), "H_n = ∫(Yφ1 + θφ2)^n ds", src(27, "103"), "H_n", step(derivation.H_103),
              printed=printed.eq103, check=checks.Definition(), definition=True),
         # ---------------------------------------------------------------- n°28
