@@ -61,8 +61,8 @@ def specs() -> tuple[Spec, ...]:
                   "H2 in moments J(i, j) = ∫φ1^iφ2^j ds."),
         Spec(rid(105, "parts"), "the last two terms of (104) = −∫ε(Kv + w)/M ds", src(28, "105"),
              r"\int\varepsilon'(K\varphi_1 + \varphi_2)ds - \varepsilon_\lambda", step(derivation.eq105),
-             printed=printed.eq105, readings=(READ_VW, READ_EPS_PRIME),
-             note="Integration by parts with (9), (10). No independent check yet."),
+             printed=printed.eq105, readings=(READ_VW, READ_EPS_PRIME), check=truth.parts_on_blades(),
+             note="Integration by parts with (9), (10); ε(s) the moment increment, ε' = dε/ds."),
         # ---------------------------------------------------------------- n°29
         Spec(rid(106, "eps"), "gε1, gε2, ε3, ε' of the isochronism error", src(29, "106"),
              r"(g\varepsilon_1, g\varepsilon_2, \varepsilon_3, \varepsilon')", step(derivation.eq106),

@@ -177,3 +177,28 @@ def alpha_order() -> checks.Order:
     return checks.Order(param="p", values=lambda level: verify.geometric("0.002", "0.05", 3), truth=truth, at=at,
                         expected=4, truth_desc=f"the exact elastica (pendsym.nonlinear_blade.end_state), {ALPHA_CASE} blade, "
                                    "X = 1; moments of the shot blade")
+
+
+# ---------------------------------------------------------------- (105): integration by parts
+def parts_on_blades():
+    """(105): −∫ε(Kv + w)/M ds on the shot blade, against the unreduced ∫ε'(Kφ1 + φ2) ds − ε_λ computed from
+    φ1 = 1 + v', φ2 = w' by quadrature, for a test moment increment ε(s) = (1 + 2s/λ)² and two K."""
+    from ..check_kinds import OnShotBlade
+
+    def points(level, dps):
+        for name in ("uniform", "tapered"):
+            shot = profiles.shot_blade(name, dps)
+            with mp.workdps(shot.wdps):
+                lam = profiles.as_mpf(shot.blade.length)
+
+                def eps(x, lam=lam):
+                    return (1 + 2 * x / lam) ** 2
+
+                def eps_prime(x, lam=lam):
+                    return 4 * (1 + 2 * x / lam) / lam
+                for K_text in ("0.9", "-0.4"):
+                    K = mp.mpf(K_text)
+                    truth = shot.integrate(lambda x: eps_prime(x) * (K * shot.phi1(x) + shot.phi2(x))) - eps(lam)
+                    yield checks.Point(f"{name}/K={K_text}", {"K": K}, truth, abs(truth)), shot, eps, None
+    return OnShotBlade(truth="quadrature on the shot blade of the unreduced ∫ε'(Kφ1 + φ2) ds − ε_λ "
+                             "(φ1 = 1 + v', φ2 = w'), ε(s) = (1 + 2s/λ)²", points=points)
