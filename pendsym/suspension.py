@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 import mpmath as mp
 import sympy as sp
 
-from . import blade as B
+from . import blade as linear_blade
 
 
 def number(x) -> mp.mpf:
@@ -56,7 +56,7 @@ class Suspension:
     ``stiffness`` is the 2×2 matrix S with (Y, N) = S·(β, θ).
     """
 
-    blade: B.Blade
+    blade: linear_blade.Blade
     dps: int
     wdps: int
     pieces: tuple
@@ -101,24 +101,24 @@ class Suspension:
     def integrate(self, f) -> mp.mpf:
         """∫_0^λ f(s) ds by Gauss–Legendre quadrature, split at the jumps of M."""
         with mp.workdps(self.wdps):
-            return B.integrate_pieces(self.pieces, f)
+            return linear_blade.integrate_pieces(self.pieces, f)
 
 
 @functools.lru_cache(maxsize=32)
-def solve(blade: B.Blade, dps: int = 30) -> Suspension:
+def solve(blade: linear_blade.Blade, dps: int = 30) -> Suspension:
     """Integrate the linearised blade (2)–(3) for the two unit end loads and build the stiffness.
 
     Raises :class:`pendsym.blade.SingularBlade` when the end position does not
     determine the loads (the inverted blade at a buckling value).
     """
-    g = B.growth(blade)
+    g = linear_blade.growth(blade)
     wdps = dps + 12 + int(g / mp.log(10))
     with mp.workdps(wdps):
         lam = number(blade.length)
         tol = mp.mpf(10) ** (-wdps)
         state = [mp.mpf(0)] * 4
         pieces = []
-        for a, b, expr in B.segments(blade):
+        for a, b, expr in linear_blade.segments(blade):
             Mf = sp.lambdify(blade.var, expr, modules="mpmath")
 
             def rhs(x, y, Mf=Mf):
@@ -134,7 +134,7 @@ def solve(blade: B.Blade, dps: int = 30) -> Suspension:
         # on a regular blade, which the guard digits of wdps cover
         scale = max(abs(yc), abs(yY) / lam, lam * abs(pc), abs(pY)) ** 2
         if abs(det) <= scale * mp.mpf(10) ** (-(wdps - 5)):
-            raise B.SingularBlade("the end position does not determine the loads (buckling value of the blade)")
+            raise linear_blade.SingularBlade("the end position does not determine the loads (buckling value of the blade)")
         per_beta = ((pY / det), (-pc / det))           # (c, Y) for β = 1, θ = 0
         per_theta = ((-yY / det), (yc / det))          # (c, Y) for β = 0, θ = 1
         # N = c + β

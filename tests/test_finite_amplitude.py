@@ -3,32 +3,32 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from pendsym import finite_amplitude as fa
+from pendsym import finite_amplitude
 from pendsym import truth, verify
 
 
 def test_free_angle_satisfies_the_definition():
-    th = fa.free_angle()
-    rel = sp.cos(th) - (sp.cos(fa.alpha) * sp.cos(fa.phi) ** 2 + sp.sin(fa.phi) ** 2)
-    f = sp.lambdify((fa.alpha, fa.phi), rel, "mpmath")
+    th = finite_amplitude.free_angle()
+    rel = sp.cos(th) - (sp.cos(finite_amplitude.alpha) * sp.cos(finite_amplitude.phi) ** 2 + sp.sin(finite_amplitude.phi) ** 2)
+    f = sp.lambdify((finite_amplitude.alpha, finite_amplitude.phi), rel, "mpmath")
     for a, p in ((0.3, 0.2), (1.9, 2.8), (1.0, 1.5)):
         assert abs(f(a, p)) < 1e-14
-    g = sp.lambdify((fa.alpha, fa.phi), th, "mpmath")
+    g = sp.lambdify((finite_amplitude.alpha, finite_amplitude.phi), th, "mpmath")
     for a in (0.3, 2.0):
         assert abs(g(a, 0) - a) < 1e-14 and abs(g(a, mp.pi) + a) < 1e-14
 
 
 def test_amplitude_rate_agrees_with_the_energy_method():
     # E = θ'²/2 − ω0² cos θ = −ω0² cos α, dE/dt = θ' f  ⇒  α' = θ' f/(ω0² sin α)
-    thd = -2 * fa.w0 * sp.sin(fa.alpha / 2) * sp.sin(fa.phi)
-    energy_rate = thd * fa.f / (fa.w0**2 * sp.sin(fa.alpha))
-    assert sp.simplify(sp.expand_trig(fa.rates()[0] - energy_rate)) == 0
+    thd = -2 * finite_amplitude.w0 * sp.sin(finite_amplitude.alpha / 2) * sp.sin(finite_amplitude.phi)
+    energy_rate = thd * finite_amplitude.f / (finite_amplitude.w0**2 * sp.sin(finite_amplitude.alpha))
+    assert sp.simplify(sp.expand_trig(finite_amplitude.rates()[0] - energy_rate)) == 0
 
 
 def test_free_swing_time_is_the_complete_elliptic_integral():
-    expr = fa.T0()
+    expr = finite_amplitude.T0()
     for a in (0.2, 1.0, 2.0):
-        val = sp.lambdify((fa.kappa, fa.w0), expr, "mpmath")
+        val = sp.lambdify((finite_amplitude.kappa, finite_amplitude.w0), expr, "mpmath")
         got = mp.quad(lambda p: 1 / mp.sqrt(1 - mp.sin(a / 2) ** 2 * mp.cos(p) ** 2), [0, mp.pi])
         assert abs(got - 2 * mp.ellipk(mp.sin(a / 2) ** 2)) < 1e-12
         del val
@@ -36,14 +36,14 @@ def test_free_swing_time_is_the_complete_elliptic_integral():
 
 def test_leading_forms_for_u_equal_cos_phi():
     # hand computation: ∫_0^π cos²φ dφ = π/2, ∫_0^π cos φ sin φ dφ = 0
-    lam = sp.Lambda(fa.phi, sp.cos(fa.phi))
-    assert sp.simplify(fa.delta_leading().replace(fa.u, lam).doit() - 1 / (2 * fa.h)) == 0
-    assert sp.simplify(fa.alpha1_leading().replace(fa.u, lam).doit()) == 0
+    lam = sp.Lambda(finite_amplitude.phi, sp.cos(finite_amplitude.phi))
+    assert sp.simplify(finite_amplitude.delta_leading().replace(finite_amplitude.u, lam).doit() - 1 / (2 * finite_amplitude.h)) == 0
+    assert sp.simplify(finite_amplitude.alpha1_leading().replace(finite_amplitude.u, lam).doit()) == 0
 
 
 def test_isochronism_term_has_no_weight_at_zero_modulus():
-    w = sp.diff(fa.first_order_densities()["dt_free"], fa.kappa)
-    assert sp.simplify(w.subs(fa.kappa, 0)) == 0
+    w = sp.diff(finite_amplitude.first_order_densities()["dt_free"], finite_amplitude.kappa)
+    assert sp.simplify(w.subs(finite_amplitude.kappa, 0)) == 0
 
 
 def _forced(a, e, dps):
@@ -62,7 +62,7 @@ def _forced(a, e, dps):
 @pytest.mark.parametrize("alpha", ["0.5", "2.0"])
 def test_exact_first_order_against_integration(alpha):
     F = lambda s, c, w, t: s + w / 3
-    fo = fa.swing_first_order(F, alpha)
+    fo = finite_amplitude.swing_first_order(F, alpha)
     for key, idx in (("delta", 0), ("alpha1", 1)):
         ev = verify.order_check(param="epsilon", values=verify.geometric("1e-4", "1e-2", 3),
                                 truth=lambda e, dps: _forced(alpha, e, dps)[idx],

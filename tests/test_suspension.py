@@ -3,15 +3,15 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from pendsym import blade as B
-from pendsym import suspension as SU
+from pendsym import blade as linear_blade
+from pendsym import suspension
 
-s = B.S
+s = linear_blade.S
 
 
 def test_stiffness_is_symmetric_for_an_unsymmetric_blade():
     """Reciprocity ∂Y/∂θ = ∂N/∂β (the loads derive from an energy) on a tapered blade."""
-    sus = SU.solve(B.Blade(sp.Rational(1, 10), sp.Rational(1, 800) * (1 + s * 10) ** 3), 30)
+    sus = suspension.solve(linear_blade.Blade(sp.Rational(1, 10), sp.Rational(1, 800) * (1 + s * 10) ** 3), 30)
     S = sus.stiffness
     with mp.workdps(40):
         assert abs(S[0, 1] - S[1, 0]) < mp.mpf(10) ** -28 * abs(S[0, 1])
@@ -23,7 +23,7 @@ def test_stiff_blade_is_the_guided_cantilever():
     lam = sp.Integer(1)
     errs = []
     for M in (sp.Integer(100), sp.Integer(1000)):
-        S = SU.solve(B.Blade(lam, M), 20).stiffness
+        S = suspension.solve(linear_blade.Blade(lam, M), 20).stiffness
         Mf = mp.mpf(int(M))
         beam = mp.matrix([[12 * Mf, -6 * Mf], [-6 * Mf, 4 * Mf]])
         errs.append(max(abs(S[i, j] - beam[i, j]) / abs(beam[i, j]) for i in range(2) for j in range(2)))
@@ -36,7 +36,7 @@ def test_limp_blade_is_a_thread():
     for M a hundredfold smaller)."""
     devs = []
     for M in (sp.Rational(1, 100), sp.Rational(1, 10**4)):
-        S = SU.solve(B.Blade(1, M), 20).stiffness
+        S = suspension.solve(linear_blade.Blade(1, M), 20).stiffness
         devs.append(max(abs(S[0, 0] - 1), abs(S[1, 1]), abs(S[0, 1])))
     assert devs[1] < 0.03
     assert 7 < devs[0] / devs[1] < 15
@@ -46,8 +46,8 @@ def test_rigid_pendulum_limit_of_the_modes():
     """A very short, limp blade is a pivot at O: the principal mode is the compound pendulum about O,
     n² = g(a + λ)/((a + λ)² + R²), and its node (the upper focus) is O itself."""
     lam, a, R, g = sp.Rational(1, 1000), "0.5", "0.1", "9.81"
-    sus = SU.solve(B.Blade(lam, lam**2 / 10**4), 20)          # u = λ/√M = 100
-    principal, parasitic = SU.modes(sus, a, R, g)
+    sus = suspension.solve(linear_blade.Blade(lam, lam**2 / 10**4), 20)          # u = λ/√M = 100
+    principal, parasitic = suspension.modes(sus, a, R, g)
     L = mp.mpf(a) + mp.mpf(1) / 1000
     expected = mp.mpf(g) * L / (L**2 + mp.mpf(R) ** 2)
     assert abs(principal.n2 / expected - 1) < 1e-3
@@ -57,8 +57,8 @@ def test_rigid_pendulum_limit_of_the_modes():
 
 
 def test_static_offset_balances_the_loads():
-    sus = SU.solve(B.Blade(sp.Rational(1, 10), sp.Rational(1, 400)), 20)
-    b0, t0 = SU.static_offset(sus, "0.9", "0.5", "0.01")
+    sus = suspension.solve(linear_blade.Blade(sp.Rational(1, 10), sp.Rational(1, 400)), 20)
+    b0, t0 = suspension.static_offset(sus, "0.9", "0.5", "0.01")
     with mp.workdps(30):
         c, Y, N = sus.loads(b0, t0)
         assert abs(Y - mp.mpf("0.01")) < 1e-20
@@ -66,7 +66,7 @@ def test_static_offset_balances_the_loads():
 
 
 def test_deflection_meets_the_end_position():
-    sus = SU.solve(B.Blade(sp.Rational(1, 10), sp.Rational(1, 400)), 20)
+    sus = suspension.solve(linear_blade.Blade(sp.Rational(1, 10), sp.Rational(1, 400)), 20)
     y, phi, _ = sus.deflection(sp.Rational(1, 10), "0.003", "0.02")
     assert abs(y - mp.mpf("0.003")) < 1e-18 and abs(phi - mp.mpf("0.02")) < 1e-18
 
@@ -74,6 +74,6 @@ def test_deflection_meets_the_end_position():
 def test_singular_inverted_blade_is_reported():
     """M < 0 with λ/√(−M) = 2π: the clamped–clamped column buckles (y = 1 − cos(2πs/λ) carries no
     end displacement), so the end position does not determine the loads: SingularBlade."""
-    with pytest.raises(B.SingularBlade):
-        SU.solve(B.Blade(1, -1 / (4 * sp.pi**2)), 20)
-    SU.solve(B.Blade(1, -1 / (3 * sp.pi**2)), 20)      # between the buckling values: regular
+    with pytest.raises(linear_blade.SingularBlade):
+        suspension.solve(linear_blade.Blade(1, -1 / (4 * sp.pi**2)), 20)
+    suspension.solve(linear_blade.Blade(1, -1 / (3 * sp.pi**2)), 20)      # between the buckling values: regular

@@ -5,7 +5,7 @@ the report's headings group the Results of a chapter by equation number.
 """
 from pendsym.memoir import Memoir, Section, headings_by
 
-from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
+from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
 from . import ch4_thread, ch5_point, ch6_short_blade, ch9_holes
 
 
@@ -22,12 +22,15 @@ CHAPTER_1 = (
     Section.of(ch1_launch, "Chapter I. Principal oscillation and launching (64)–(76)"),
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
+CHAPTER_2 = (
+    Section.of(ch2_general, "Chapter II. General theory of perturbations and the isochronism error (88)–(114)"),
+)
 CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
 CHAPTER_5 = (Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(211)"),)
 CHAPTER_6 = _of(ch6_short_blade)
 CHAPTER_9 = _of(ch9_holes)
-SECTIONS = CHAPTER_1 + CHAPTER_3 + CHAPTER_4 + CHAPTER_5 + CHAPTER_6 + CHAPTER_9
+SECTIONS = CHAPTER_1 + CHAPTER_2 + CHAPTER_3 + CHAPTER_4 + CHAPTER_5 + CHAPTER_6 + CHAPTER_9
 
 
 def _eqs(lo: int, hi: int, chapter: tuple[Section, ...]):
@@ -42,6 +45,8 @@ HEADINGS = (
     ("Chapter I. Small variations of the periods, temperature, g (42)–(63)", _eqs(42, 63, CHAPTER_1)),
     ("Chapter I. Principal oscillation, launching, shape, fatigue, suppleness, fork (64)–(87)",
      _eqs(64, 87, CHAPTER_1)),
+    ("Chapter II. General theory of perturbations: f, ΔX, ΔY, ΔN (88)–(105)", _eqs(88, 105, CHAPTER_2)),
+    ("Chapter II. The isochronism error and the classical formula (106)–(114)", _eqs(106, 114, CHAPTER_2)),
     ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, CHAPTER_3)),
     ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, CHAPTER_3)),
     ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, CHAPTER_3)),
@@ -59,11 +64,14 @@ HEADINGS = (
 MEMOIR = Memoir(
     key="haag1935",
     title=("J. Haag, Théorie de la suspension élastique des pendules (1935): chapter I, first approximation "
-           "for any M(s), eqs. (1)–(87); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
+           "for any M(s), eqs. (1)–(87); chapter II, n°26–30, the second approximation and the isochronism error, "
+           "eqs. (88)–(114); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
            "the thread, the point pendulum and beats, eqs. (184)–(211); chapter VI, the short blade, "
            "eqs. (212)–(240); chapter IX, blades with a hole, eqs. (321)–(346)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), HEADINGS),
+    # (111) and (112) are checked on the same nonlinear periods
+    affinity=(ch2_general.PERIOD_RESULTS,),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,
