@@ -13,6 +13,8 @@ import mpmath as mp
 
 from pendsym.scenes.effects import Effect, Instrument
 
+from . import truth
+
 
 def _per_swing(value: float, inst: Instrument) -> float:
     """ΔT/T with T = π/k."""
@@ -24,6 +26,15 @@ def _circular_exact(inst: Instrument) -> tuple[float, float, str]:
     with mp.workdps(30):
         rel = 2 * mp.ellipk(mp.sin(mp.mpf(inst.alpha) / 2) ** 2) / mp.pi - 1
     return float(rel), 1e-16, "exact swing of θ'' + k² sin θ = 0, 2K(sin²½α)/k (Gauss's AGM)"
+
+
+def _drift_exact(inst: Instrument) -> tuple[float, float, str]:
+    """T/T_lin − 1 for l = l0(1 + at), θ'' + (2/l)l'θ' + (g/l)θ = 0 integrated (n°27–28's governing model)."""
+    a = inst.drift_a
+    with mp.workdps(20):
+        sw = truth.swing("growing", repr(inst.alpha), repr(inst.k), 20, a=repr(a))
+        rel = sw.T * mp.mpf(inst.k) / mp.pi - 1
+    return float(rel), 1e-15, "θ'' + (2/l)l'θ' + (g/l)θ = 0 with l = l0(1 + at) integrated (mpmath odefun, 20 digits)"
 
 
 def effects() -> tuple[Effect, ...]:
@@ -44,8 +55,8 @@ def effects() -> tuple[Effect, ...]:
         Effect("length_drift", "length growing at a constant rate (one swing from rest)",
                "Charbonnier 1908, n°32 (ΔT = aT²/4, l = l0(1 + at))", "charbonnier1908.n32.dT",
                applies=lambda i: bool(i.drift_rate),
-               estimate=lambda i: abs(i.drift_rate / i.l) * i.T0 / 4,
-               symbols=lambda i: {"a": i.drift_rate / i.l, "k": i.k}, relative=_per_swing,
+               estimate=lambda i: abs(i.drift_a) * i.T0 / 4,
+               symbols=lambda i: {"a": i.drift_a, "k": i.k}, relative=_per_swing,
                # first order in a: the next is O((aT)²)
-               error=lambda rel, i: (i.drift_rate / i.l * i.T0) ** 2, order=40),
+               error=lambda rel, i: (i.drift_a * i.T0) ** 2, exact=_drift_exact, order=40),
     )

@@ -52,6 +52,12 @@ class Instrument:
         return self.m * self.g / self.thread_EA
 
     @property
+    def drift_a(self) -> float:
+        """a of l = l0(1 + at): the rate over the length that grows (for a thread, the unstretched
+        length paid out: the stretched one grows in the same ratio)."""
+        return self.drift_rate / (self.thread_length if self.kind == "thread" else self.l)
+
+    @property
     def blade_M(self) -> float:
         """M = EI/(mg) (m²)."""
         return self.blade_EI / (self.m * self.g)

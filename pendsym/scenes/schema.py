@@ -10,6 +10,7 @@ are refused.  The checks that join several keys (an inconsistent input) are in
 from __future__ import annotations
 
 import json
+import unicodedata
 from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
@@ -87,8 +88,7 @@ class Scene(Strict):
     def consistent(self) -> "Scene":
         """Inputs that contradict each other are errors (each message names the keys)."""
         sus = self.suspension
-        if any(ord(ch) < 32 or 0x7f <= ord(ch) < 0xa0 or 0x200b <= ord(ch) <= 0x206f or ord(ch) == 0xfeff
-               for ch in self.name):
+        if any(unicodedata.category(ch) in ("Cc", "Cf", "Cs", "Co", "Cn") for ch in self.name):
             raise ValueError("name: must be text without control or format characters")
         if isinstance(sus, Thread):
             if self.bob.a is not None:
