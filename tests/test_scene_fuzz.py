@@ -152,8 +152,20 @@ def toml_text(data: dict) -> str:
     return "".join(f"{toml_value(str(k))} = {toml_value(v)}\n" for k, v in data.items())
 
 
+class NoAnswerCache:
+    """The answers of generated scenes are computed, not remembered (the shared cache stays small)."""
+
+    def __enter__(self):
+        self.remember = scenes.remember
+        scenes.remember = lambda key, compute: compute()
+
+    def __exit__(self, *exc):
+        scenes.remember = self.remember
+
+
 def run_in_process(capsys, path):
-    code = cli.main(["scene", str(path)])
+    with NoAnswerCache():
+        code = cli.main(["scene", str(path)])
     out, err = capsys.readouterr()
     assert "Traceback" not in out + err
     if code == 0:

@@ -15,6 +15,7 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
+from .. import cache, keys, registry
 from ..scene import SceneError, parse, printable
 from . import schema
 from .budget import Budget, solve, text, as_json
@@ -74,6 +75,11 @@ def _description(loc: tuple) -> str:
     return printable(desc)
 
 
+def remember(key: str, compute):
+    """The answer from the shared cache, or computed and stored."""
+    return cache.memo(key, compute)
+
+
 def load(path: Path | str) -> schema.Scene:
     data = parse(path)
     return from_data(data, f"scene {printable(str(path))}")
@@ -84,5 +90,12 @@ def report(path: Path | str, as_json_out: bool = False, data: dict | None = None
     data = parse(path) if data is None else data
     sc = from_data(data, f"scene {printable(str(path))}")
     name = printable(sc.name or Path(path).stem)
-    b = solve(sc)
-    return json.dumps(as_json(b, name), indent=1, allow_nan=False) if as_json_out else text(b, name)
+
+    def answer() -> str:
+        b = solve(sc)
+        return json.dumps(as_json(b, name), indent=1, allow_nan=False) if as_json_out else text(b, name)
+    # the answer is a pure function of the scene and of every source file (tree_key, computed
+    # without importing a memoir): a repeated scene is read back without importing the memoirs
+    key = keys.digest(("scene answer", keys.tree_key(registry.packages()), sc.model_dump_json(), name,
+                       "json" if as_json_out else "text"))
+    return remember(key, answer)

@@ -209,16 +209,16 @@ def solve(sc: schema.Scene) -> Budget:
         if eff.scale_by:
             rel *= rels[eff.scale_by]
         err = float(eff.error(rel, inst))
-        model = f"first order ({eff.result}), next order {err:.2g} ≤ {share:.2g}"
+        model = f"{eff.model} ({eff.result}), estimated error {err:.2g} ≤ {share:.2g}"
         if err > share:
             if eff.exact is not None:
                 first_err = err
                 rel, err, how = eff.exact(inst)
                 if eff.scale_by:
                     rel *= rels[eff.scale_by]
-                model = f"{how}: the first order's error {first_err:.2g} exceeds {share:.2g}"
+                model = f"{how}: the {eff.model}'s error {first_err:.2g} exceeds {share:.2g}"
             else:
-                model = f"first order ({eff.result}); its error {err:.2g} exceeds the share {share:.2g} " \
+                model = f"{eff.model} ({eff.result}); its error {err:.2g} exceeds the share {share:.2g} " \
                         "and the engine has no more complete model"
         rels[eff.key] = rel
         rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, rel, err, "kept", model))

@@ -93,6 +93,7 @@ class Effect:
     error: Callable[[float, Instrument], float]
     exact: Callable[[Instrument], tuple[float, float, str]] | None = None
     scale_by: str | None = None          # the key of an effect whose ΔT/T multiplies this one's
+    model: str = "first order"           # what the Result is, for the budget's "model" line
     order: int = 50                      # the budget's row order
 
 
