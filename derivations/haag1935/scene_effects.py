@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from pendsym.scenes.effects import Effect, Instrument
+from pendsym.scenes.effects import Effect, Instrument, Pending
 
 
 def _blade(inst: Instrument) -> dict[str, float]:
@@ -26,3 +26,12 @@ def effects() -> tuple[Effect, ...]:
                error=lambda rel, i: 1e-14 * abs(rel), order=5,
                model="linear theory of the blade, exact for small oscillations (evaluated at 30 digits)"),
     )
+
+
+def pending() -> tuple[Pending, ...]:
+    """What Haag treats for a blade that the engine has not built yet (other chapters)."""
+    is_blade = lambda i: i.kind == "blade"
+    return (Pending("blade_isochronism", "blade at finite amplitude (isochronism error)", "Haag 1935, ch. II, VII",
+                    is_blade),
+            Pending("blade_clamping", "clamping errors of the blade", "Haag 1935, ch. II, VII", is_blade),
+            Pending("blade_inertia", "inertia and weight of the blade", "Haag 1935, ch. II", is_blade))

@@ -39,7 +39,9 @@ def from_data(data: dict, where: str = "scene") -> schema.Scene:
     except ValidationError as exc:
         errs = exc.errors(include_url=False)
         first = errs[0]
-        loc = ".".join(printable(str(p)) for p in first["loc"]) or "(top level)"
+        path = [p for i, p in enumerate(first["loc"])          # suspension.E, not suspension.blade.E
+                if not (i and first["loc"][i - 1] == "suspension" and p in ("knife", "thread", "blade"))]
+        loc = ".".join(printable(str(p)) for p in path) or "(top level)"
         msg = printable(first["msg"]).replace("\n", " ")
         if first["type"] == "value_error":          # the consistency checks write their own line
             line = f"{where}: {msg.removeprefix('Value error, ')}"

@@ -23,7 +23,7 @@ from .. import cache, keys, registry
 from ..result import Result
 from ..scene import SceneError
 from . import schema
-from .effects import Effect, Instrument, effects
+from .effects import Effect, Instrument, effects, pending
 
 SECONDS_PER_DAY = 86400.0
 
@@ -120,17 +120,11 @@ def _within_theories(inst: Instrument) -> None:
 
 
 # No Result gives the coupling of two effects (e.g. the circular error of a pendulum whose length
-# grows: its amplitude decays as it swings, Charbonnier n°33).  The product of the factors
-# (1 + ΔT_i/T) keeps the product terms; what they miss is bounded by COUPLING Σ|ΔT_i/T · ΔT_j/T|.
-# Measured: the bucket scene's integration (tests/test_scene_instruments.py) shows a coupling of
-# circular error and length drift of −2.1 × the product, so 1 would be too small.
+# grows: its amplitude decays as it swings).  The product of the factors (1 + ΔT_i/T) keeps the
+# product terms; what they miss is bounded by COUPLING Σ|ΔT_i/T · ΔT_j/T|.  Measured: the bucket
+# scene's integration (tests/test_scene_instruments.py) shows a coupling of circular error and
+# length drift of −2.1 × the product, so 1 would be too small.
 COUPLING = 4.0
-
-# effects a memoir treats but the engine has no Result for yet (listed, not guessed)
-MISSING = {
-    "blade": (("blade_isochronism", "blade at finite amplitude (isochronism)", "Haag 1935, ch. II"),
-              ("blade_clamping", "clamping errors of the blade", "Haag 1935, ch. IV")),
-}
 
 
 def build(ids: list[str]) -> dict[str, Result]:
@@ -222,9 +216,10 @@ def solve(sc: schema.Scene) -> Budget:
                         "and the engine has no more complete model"
         rels[eff.key] = rel
         rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, rel, err, "kept", model))
-    for key, title, source in MISSING.get(inst.kind, ()):
-        rows.append(Row(key, title, source, "", math.nan, None, math.nan, "not available",
-                        "not in the engine yet: not counted in the error"))
+    for p in pending():
+        if p.applies(inst):
+            rows.append(Row(p.key, p.title, p.source, "", math.nan, None, math.nan, "not available",
+                            "not in the engine yet: not counted in the error"))
     factor = math.prod(1 + r for r in rels.values())
     vals = list(rels.values())
     interaction = COUPLING * sum(abs(vals[i] * vals[j]) for i in range(len(vals)) for j in range(i + 1, len(vals)))

@@ -97,17 +97,41 @@ class Effect:
     order: int = 50                      # the budget's row order
 
 
-@lru_cache(maxsize=8)
-def discover(pkgs: tuple[str, ...]) -> tuple[Effect, ...]:
-    """Every memoir's declared effects (``<package>.<memoir>.scene_effects.effects()``)."""
-    out: list[Effect] = []
+@dataclass(frozen=True)
+class Pending:
+    """An effect a memoir treats that the engine has not built yet: listed in the budget, no size."""
+
+    key: str
+    title: str
+    source: str
+    applies: Callable[[Instrument], bool]
+
+
+def _modules(pkgs: tuple[str, ...]):
     for pkg_name in pkgs:
         pkg = importlib.import_module(pkg_name)
         for info in sorted(pkgutil.iter_modules(pkg.__path__), key=lambda i: i.name):
             name = f"{pkg_name}.{info.name}.scene_effects"
-            if not info.ispkg or importlib.util.find_spec(name) is None:
-                continue
-            out.extend(importlib.import_module(name).effects())
+            if info.ispkg and importlib.util.find_spec(name) is not None:
+                yield importlib.import_module(name)
+
+
+@lru_cache(maxsize=8)
+def discover_pending(pkgs: tuple[str, ...]) -> tuple[Pending, ...]:
+    """Every memoir's effects not built yet (``scene_effects.pending()``, optional)."""
+    return tuple(p for mod in _modules(pkgs) for p in (mod.pending() if hasattr(mod, "pending") else ()))
+
+
+def pending() -> tuple[Pending, ...]:
+    return discover_pending(registry.packages())
+
+
+@lru_cache(maxsize=8)
+def discover(pkgs: tuple[str, ...]) -> tuple[Effect, ...]:
+    """Every memoir's declared effects (``<package>.<memoir>.scene_effects.effects()``)."""
+    out: list[Effect] = []
+    for mod in _modules(pkgs):
+        out.extend(mod.effects())
     keys = [e.key for e in out]
     if len(set(keys)) != len(keys):
         raise ValueError(f"two memoirs declare the same scene effect: {sorted(k for k in keys if keys.count(k) > 1)}")

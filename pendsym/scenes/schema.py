@@ -1,7 +1,7 @@
 """The hardware scene: a pendulum described as an instrument (TOML, SI units), validated by pydantic.
 
-The schema is written once, here; ``docs/scenes.md`` shows it and
-``python -m pendsym.scenes.schema`` prints it as JSON Schema.  Every number is SI:
+The schema is written once, here; ``docs/scenes.md`` shows it and :func:`json_schema`
+gives it as JSON Schema.  Every number is SI:
 kilograms, metres, seconds, radians, newtons, pascals.  Strict types: a string is
 never read as a number, a bool never as 0/1; NaN and ±inf are refused; unknown keys
 are refused.  The checks that join several keys (an inconsistent input) are in
@@ -9,7 +9,6 @@ are refused.  The checks that join several keys (an inconsistent input) are in
 """
 from __future__ import annotations
 
-import json
 import unicodedata
 from typing import Annotated, Literal, Union
 
@@ -116,6 +115,3 @@ def json_schema() -> dict:
     """The schema as JSON Schema (for editors and for docs/scenes.md)."""
     return Scene.model_json_schema()
 
-
-if __name__ == "__main__":
-    print(json.dumps(json_schema(), indent=1))
