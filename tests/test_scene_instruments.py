@@ -85,3 +85,43 @@ def test_only_the_closure_of_the_kept_effects_is_built(root):
     assert 0 < b.built < b.total / 5
     dropped = [r for r in b.rows if r.status == "dropped"]
     assert dropped and all(r.value is None for r in dropped)
+
+
+def with_tolerance(root, name, tol):
+    import tomllib
+    data = tomllib.loads((root / SCENES / name).read_text(encoding="utf-8"))
+    data["wanted"]["tolerance"] = tol
+    return scenes.solve(scenes.from_data(data))
+
+
+def test_a_loose_tolerance_drops_effects_and_builds_fewer_results(root):
+    tight = with_tolerance(root, "kater_compliant_stand.toml", 1e-7)
+    loose = with_tolerance(root, "kater_compliant_stand.toml", 1e-4)
+    status = {r.key: r.status for r in loose.rows}
+    assert status == {"circular": "dropped", "support_sway": "dropped", "support_mass": "dropped"}
+    assert loose.built == 0 < tight.built
+    assert loose.swing == loose.inst.T0 and loose.error <= 1e-4 / 2
+
+
+def test_a_tight_tolerance_takes_the_exact_swing_instead_of_the_first_order(root):
+    sc_first = with_tolerance(root, "kater_compliant_stand.toml", 1e-7)
+    sc_exact = with_tolerance(root, "kater_compliant_stand.toml", 1e-12)
+    first = next(r for r in sc_first.rows if r.key == "circular")
+    exact = next(r for r in sc_exact.rows if r.key == "circular")
+    assert first.model.startswith("first order") and "exact swing" in exact.model
+    alpha = sc_exact.inst.alpha
+    # the two differ by the next term of 2K(sin²½α)/π − 1 (11α⁴/3072), which the first order leaves out
+    assert exact.value - first.value == pytest.approx(11 * alpha**4 / 3072, rel=1e-3)
+
+
+def test_the_json_budget_is_complete(root):
+    import json
+    import subprocess
+    import sys
+    p = subprocess.run([sys.executable, "-m", "pendsym.cli", "scene", str(root / SCENES / "bucket_in_well.toml"),
+                        "--json"], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    d = json.loads(p.stdout)
+    assert d["period_s"] == pytest.approx(2 * d["swing_time_s"]) and d["within_tolerance"] is True
+    assert {r["effect"]: r["status"] for r in d["budget"]} == {
+        "circular": "kept", "thread_elasticity": "dropped", "length_drift": "kept"}
