@@ -51,6 +51,7 @@ def _parser(with_keys: bool = True) -> Parser:
     sc = sub.add_parser("scene", help="an instrument's period and error budget, or a list of Results, from a scene file (TOML, docs/scenes.md)")
     sc.add_argument("file")
     sc.add_argument("--json", action="store_true", help="JSON output")
+    sc.add_argument("--pdf", metavar="OUT.pdf", help="a hardware scene: also a one-page PDF of its budget")
     ck = sub.add_parser("check", help="run one Result's independent verification and print the evidence",
                         epilog="exit codes: 0 the check passed (or there is none), 1 it failed, 2 bad input")
     ck.add_argument("id")
@@ -230,7 +231,10 @@ def cmd_scene(args) -> int:
     data = scene.parse(args.file)
     if scene.is_hardware(data):          # an instrument described as hardware: pendsym.scenes
         from . import scenes
-        print(scenes.report(args.file, args.json, data))
+        text = scenes.report(args.file, args.json, data)
+        if args.pdf:
+            print(f"wrote {scenes.pdf(args.file, args.pdf, data)}", file=sys.stderr)
+        print(text)
         return 0
     sc = scene.load(args.file, data)
     rows, n_built = scene.evaluate(sc)

@@ -125,3 +125,19 @@ def test_the_json_budget_is_complete(root):
     assert d["period_s"] == pytest.approx(2 * d["swing_time_s"]) and d["within_tolerance"] is True
     assert {r["effect"]: r["status"] for r in d["budget"]} == {
         "circular": "kept", "thread_elasticity": "dropped", "length_drift": "kept"}
+
+
+@pytest.mark.skipif(__import__("shutil").which("latexmk") is None, reason="no latexmk (make tex-tools)")
+def test_the_one_page_pdf(root, tmp_path):
+    import subprocess
+    import sys
+    out = tmp_path / "budget.pdf"
+    p = subprocess.run([sys.executable, "-m", "pendsym.cli", "scene", str(root / SCENES / "kater_compliant_stand.toml"),
+                        "--pdf", str(out)], capture_output=True, text=True, timeout=600)
+    assert p.returncode == 0, p.stderr
+    data = out.read_bytes()
+    assert data.startswith(b"%PDF") and b"%%EOF" in data[-64:]
+    if __import__("shutil").which("pdfinfo"):
+        info = subprocess.run(["pdfinfo", str(out)], capture_output=True, text=True).stdout
+        assert "Pages:           1" in info, info
+    assert not (tmp_path / "budget.pdf.part").exists()

@@ -87,6 +87,14 @@ def load(path: Path | str) -> schema.Scene:
     return from_data(data, f"scene {printable(str(path))}")
 
 
+def pdf(path: Path | str, out: Path | str, data: dict | None = None) -> Path:
+    """The one-page PDF of the scene's budget (see :mod:`pendsym.scenes.page`)."""
+    from . import page
+    data = parse(path) if data is None else data
+    sc = from_data(data, f"scene {printable(str(path))}")
+    return page.write(solve(sc), printable(sc.name or Path(path).stem), out)
+
+
 def report(path: Path | str, as_json_out: bool = False, data: dict | None = None) -> str:
     """The answer and its budget, as text or JSON; everything is computed before anything is returned."""
     data = parse(path) if data is None else data
