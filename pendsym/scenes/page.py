@@ -19,14 +19,17 @@ SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r
            "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
 
 
+DECLARED = "ΔαδλμεπΓ²−–—≤"     # the characters the page's preamble declares
+
+
 def escape(text: str) -> str:
-    """Plain text for LaTeX: its special characters escaped, anything outside printable ASCII and
-    Latin-1/Greek/math symbols written as '?' (the file's name is the user's)."""
+    """Plain text for LaTeX: its special characters escaped; anything outside printable ASCII,
+    Latin-1 and DECLARED written as '?' (the scene's name is the user's)."""
     out = []
     for ch in text:
         if ch in SPECIAL:
             out.append(SPECIAL[ch])
-        elif ch.isprintable() and ord(ch) < 0x2000:
+        elif ch.isprintable() and (ord(ch) < 0x7f or 0xa0 <= ord(ch) <= 0xff or ch in DECLARED):
             out.append(ch)
         else:
             out.append("?")
@@ -95,6 +98,12 @@ def tex(b: Budget, name: str) -> str:
 \DeclareUnicodeCharacter{{00B2}}{{$^2$}}
 \DeclareUnicodeCharacter{{2212}}{{$-$}}
 \DeclareUnicodeCharacter{{2013}}{{--}}
+\DeclareUnicodeCharacter{{2014}}{{---}}
+\DeclareUnicodeCharacter{{2264}}{{$\leq$}}
+\DeclareUnicodeCharacter{{03BC}}{{$\mu$}}
+\DeclareUnicodeCharacter{{03B5}}{{$\varepsilon$}}
+\DeclareUnicodeCharacter{{03C0}}{{$\pi$}}
+\DeclareUnicodeCharacter{{0393}}{{$\Gamma$}}
 \pagestyle{{empty}}
 \begin{{document}}
 \section*{{{escape(name)}}}
