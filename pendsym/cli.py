@@ -236,6 +236,8 @@ def cmd_scene(args) -> int:
             print(f"wrote {scenes.pdf(args.file, args.pdf, data)}", file=sys.stderr)
         print(text)
         return 0
+    if args.pdf:
+        raise UsageError("--pdf is for a hardware scene (bob, suspension…), not a list of Results")
     sc = scene.load(args.file, data)
     rows, n_built = scene.evaluate(sc)
     if args.json:
