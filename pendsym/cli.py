@@ -48,9 +48,10 @@ def _parser(with_keys: bool = True) -> Parser:
     dv.add_argument("--out", default=None, help="output directory of a full derive (default: generated)")
     dv.add_argument("--level", choices=("quick", "full"), default=None, help="check level of a full derive")
     dv.add_argument("--json", action="store_true", help="with ids: their records as in generated/results.json")
-    sc = sub.add_parser("scene", help="compute one concrete configuration from a scene file (TOML)")
+    sc = sub.add_parser("scene", help="an instrument's period and error budget, or a list of Results, from a scene file (TOML, docs/scenes.md)")
     sc.add_argument("file")
     sc.add_argument("--json", action="store_true", help="JSON output")
+    sc.add_argument("--pdf", metavar="OUT.pdf", help="a hardware scene: also a one-page PDF of its budget")
     ck = sub.add_parser("check", help="run one Result's independent verification and print the evidence",
                         epilog="exit codes: 0 the check passed (or there is none), 1 it failed, 2 bad input")
     ck.add_argument("id")
@@ -227,7 +228,17 @@ def cmd_check(args) -> int:
 
 
 def cmd_scene(args) -> int:
-    sc = scene.load(args.file)
+    data = scene.parse(args.file)
+    if scene.is_hardware(data):          # an instrument described as hardware: pendsym.scenes
+        from . import scenes
+        text = scenes.report(args.file, args.json, data)
+        if args.pdf:
+            print(f"wrote {scenes.pdf(args.file, args.pdf, data)}", file=sys.stderr)
+        print(text)
+        return 0
+    if args.pdf:
+        raise UsageError("--pdf is for a hardware scene (bob, suspension…), not a list of Results")
+    sc = scene.load(args.file, data)
     rows, n_built = scene.evaluate(sc)
     if args.json:
         print(json.dumps({"scene": sc.name, "results_built": n_built,

@@ -1,5 +1,9 @@
 """Scenes: one concrete pendulum configuration, computed from the Results it names.
 
+This is the memoir-minded form (a list of Result ids); a scene that describes hardware
+(bob, suspension, support…) is read by :mod:`pendsym.scenes` (see docs/scenes.md).  A file
+with a ``results`` key is of this form, any other is a hardware scene.
+
 A scene file is TOML (read with the standard library's tomllib, never
 evaluated), at most 1 MiB of UTF-8:
 
@@ -73,15 +77,26 @@ def _numbers(where: str, table) -> tuple[tuple[str, float], ...]:
     return tuple(sorted((k, float(v)) for k, v in table.items()))
 
 
-def load(path: Path | str) -> Scene:
+def parse(path: Path | str) -> dict:
+    """The file's TOML as a dict (size, encoding, syntax and nesting checked; nothing evaluated)."""
     text = _read(path)
     where = f"scene {printable(str(path))}"
     try:
-        data = tomllib.loads(text)
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"{where} is not valid TOML: {exc}") from None
+        raise SceneError(f"{where} is not valid TOML: {printable(str(exc))}") from None
     except RecursionError:
         raise SceneError(f"{where} is nested too deeply") from None
+
+
+def is_hardware(data: dict) -> bool:
+    """A hardware scene (pendsym.scenes: bob, suspension, …) rather than a list of Result ids."""
+    return "results" not in data
+
+
+def load(path: Path | str, data: dict | None = None) -> Scene:
+    data = parse(path) if data is None else data
+    where = f"scene {printable(str(path))}"
     extra = set(data) - {"name", "results", "parameters"}
     if extra:
         raise SceneError(f"{where}: unknown keys {[printable(k) for k in sorted(extra)]}")

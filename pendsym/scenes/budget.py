@@ -1,0 +1,283 @@
+"""Select → estimate → drop → choose the cheapest adequate model → budget, for a hardware scene.
+
+1. Select every declared effect that applies to the instrument (:mod:`pendsym.scenes.effects`).
+2. Estimate each from the memoir's printed statement; drop the smallest while their sum stays
+   within half the tolerance (a dropped effect's Result is never built).
+3. Build only the closure of the kept effects' Results (:func:`pendsym.registry.build`) and
+   evaluate each derived form at 30 digits.
+4. For each kept effect take the first-order Result when its next-order error is within a
+   share of the tolerance, else the effect's more complete model (e.g. the exact swing).
+5. The swing time T = T0 Π(1 + ΔT/T); its estimated error is the sum of the kept effects'
+   errors, the dropped effects' sizes and the products of the kept effects (their interaction,
+   which no Result gives).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mpmath as mp
+import sympy as sp
+
+from .. import cache, keys, registry
+from ..result import Result
+from ..scene import SceneError
+from . import schema
+from .effects import Effect, Instrument, effects, pending
+
+SECONDS_PER_DAY = 86400.0
+
+
+@dataclass(frozen=True)
+class Row:
+    key: str
+    title: str
+    source: str
+    result: str
+    estimate: float
+    value: float | None           # ΔT/T used (None: dropped, not built)
+    error: float                  # estimated error of the value (or the dropped size)
+    status: str                   # "kept", "dropped", "not available"
+    model: str
+
+
+@dataclass(frozen=True)
+class Budget:
+    scene: schema.Scene
+    inst: Instrument
+    swing: float
+    error: float                  # relative, estimated
+    rows: tuple[Row, ...]
+    interaction: float
+    built: int
+    total: int
+
+    @property
+    def period(self) -> float:
+        return 2 * self.swing
+
+    @property
+    def rate(self) -> float | None:
+        """Seconds gained per day (negative: lost) against the target period."""
+        target = self.scene.wanted.target_period
+        return None if target is None else -(self.period - target) / target * SECONDS_PER_DAY
+
+    @property
+    def within(self) -> bool:
+        return self.error <= self.scene.wanted.tolerance
+
+
+def instrument(sc: schema.Scene) -> Instrument:
+    """The hardware as numbers, with the rigid pendulum's linear base T0 = π√(l/g), l = (a² + R²)/a."""
+    sus, bob = sc.suspension, sc.bob
+    extra: dict = {}
+    if isinstance(sus, schema.Thread):
+        mu = bob.mass * sc.g / sus.EA
+        a = sus.length * (1 + mu)            # the static stretch, l0 = λ(1 + mg/e) (the thread law)
+        extra = {"thread_length": sus.length, "thread_EA": sus.EA}
+    else:
+        a = bob.a
+    if isinstance(sus, schema.Blade):
+        extra = {"blade_length": sus.length, "blade_EI": sus.E * sus.width * sus.thickness**3 / 12}
+    if sc.support is not None:
+        extra.update(support_K=sc.support.compliance, support_M=sc.support.mass)
+    if sc.drift is not None:
+        extra["drift_rate"] = sc.drift.rate
+    l = (a * a + bob.R**2) / a
+    k = math.sqrt(sc.g / l)
+    inst = Instrument(sus.kind, bob.mass, a, bob.R, sc.g, sc.amplitude, l, k, math.pi / k, **extra)
+    _within_theories(inst)
+    return inst
+
+
+def _within_theories(inst: Instrument) -> None:
+    """Refuse a scene outside the perturbation theories' reach, naming the keys (before any build)."""
+    if inst.kind == "blade":
+        u = inst.blade_u
+        if not 1e-6 <= u <= 700:
+            raise SceneError(f"suspension: u = λ√(mg/EI) = {u:.4g} is outside [1e-06, 700] (the uniform blade's "
+                             "Results are declared there): change suspension.length, thickness, width or E")
+        if not (1e-2 <= inst.a <= 5 and 1e-3 <= inst.R <= 2):
+            raise SceneError(f"bob.a = {inst.a:g}, bob.R = {inst.R:g}: with a blade, a must be in [0.01, 5] m and "
+                             "R in [0.001, 2] m (the blade's Results are declared there)")
+    if inst.kind == "thread" and inst.mu > 0.1:
+        raise SceneError(f"suspension.EA = {inst.thread_EA:g}: the thread stretches by mg/e = {inst.mu:.3g} "
+                         "under the bob, beyond a perturbation (expected mg/e ≤ 0.1)")
+    if inst.support_K:
+        delta = inst.support_K * inst.m * inst.g * inst.a / (2 * inst.l**2)
+        if delta > 1e-2:
+            raise SceneError(f"support.compliance = {inst.support_K:g}: the support's sway would change the period "
+                             f"by {delta:.3g}, beyond a perturbation (expected ≤ 0.01)")
+        dyn = inst.support_K * inst.support_M * inst.g / inst.l
+        if dyn > 0.1:
+            raise SceneError(f"support.mass = {inst.support_M:g}: K M g/l = {dyn:.3g}, the support's own vibration "
+                             "is not slow beside the pendulum (expected ≤ 0.1)")
+    if inst.drift_rate:
+        aT = abs(inst.drift_a * inst.T0)
+        if aT > 0.1:
+            raise SceneError(f"drift.rate = {inst.drift_rate:g}: the length changes by {aT:.3g} of itself in one "
+                             "swing, beyond a perturbation (expected ≤ 0.1)")
+
+
+# No Result gives the coupling of two effects (e.g. the circular error of a pendulum whose length
+# grows: its amplitude decays as it swings).  The product of the factors (1 + ΔT_i/T) keeps the
+# product terms; what they miss is bounded by COUPLING Σ|ΔT_i/T · ΔT_j/T|.  Measured: the bucket
+# scene's integration (tests/test_scene_instruments.py) shows a coupling of circular error and
+# length drift of −2.1 × the product, so 1 would be too small.
+COUPLING = 4.0
+
+
+def build(ids: list[str]) -> dict[str, Result]:
+    """The closure of ids, each Result's forms read from the shared cache under the key a full
+    derive uses (``built``, the Result's key), or derived here and stored."""
+    memoirs = sorted({registry.memoir_of(i) for i in ids})
+    specs = registry.all_specs(memoirs)
+    order = registry.closure(ids, specs)
+    section = {s.id: sec.module for m in memoirs for sec in registry.memoir(m).sections for s in sec.specs}
+    ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, ("pendsym", *registry.packages()))
+    built: dict[str, Result] = {}
+    for rid in order:
+        spec = specs[rid]
+
+        def forms(spec=spec):
+            r = registry.build_one(spec, built)
+            return r.derived, r.printed
+        derived, printed = cache.memo(keys.digest(("built", "", ks[rid])), forms)
+        built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={d: built[d] for d in spec.deps})
+    return built
+
+
+def _value(expr: sp.Expr, values: dict[str, float], rid: str) -> float:
+    """The derived form at this scene, at 30 digits."""
+    subs = {}
+    for sym in expr.free_symbols:
+        if sym.name not in values:
+            raise SceneError(f"{rid} needs the symbol {sym.name}, which the memoir's scene mapping does not give")
+        subs[sym] = sp.Float(repr(float(values[sym.name])), 30)
+    with mp.workdps(30):
+        val = sp.N(expr.subs(subs), 30)
+    if not val.is_number or not val.is_real or val.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise SceneError(f"{rid} has no finite real value for this scene")
+    out = float(val)
+    if not math.isfinite(out):
+        raise SceneError(f"{rid} = {val} for this scene: not a finite double")
+    return out
+
+
+def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
+    """Drop the smallest estimates while their sum stays within half the tolerance."""
+    dropped, total = set(), 0.0
+    for eff, est in sorted(applicable, key=lambda p: abs(p[1])):
+        if math.isinf(est) or total + abs(est) > tol / 2:
+            break
+        dropped.add(eff.key)
+        total += abs(est)
+    return dropped
+
+
+def solve(sc: schema.Scene) -> Budget:
+    inst = instrument(sc)
+    tol = sc.wanted.tolerance
+    applicable = [(e, float(e.estimate(inst))) for e in effects() if e.applies(inst)]
+    dropped = _drop(applicable, tol)
+    kept = [e for e, _ in applicable if e.key not in dropped]
+    kept_keys = {e.key for e in kept}
+    for e in kept:
+        if e.scale_by and e.scale_by not in kept_keys:
+            raise SceneError(f"effect {e.key} is kept but {e.scale_by}, which it scales, is dropped")
+    try:
+        built = build([e.result for e in kept]) if kept else {}
+    except registry.UnknownResult as exc:
+        raise SceneError(f"a memoir's scene effect names {exc}") from None
+    total = len(registry.all_specs())
+    share = tol / (4 * max(1, len(kept)))
+    rels: dict[str, float] = {}
+    rows: list[Row] = []
+    for eff, est in applicable:
+        if eff.key in dropped:
+            rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, None, abs(est), "dropped",
+                            f"estimated from the printed statement, below the tolerance"))
+            continue
+        value = _value(built[eff.result].derived_value, dict(eff.symbols(inst)), eff.result)
+        rel = float(eff.relative(value, inst))
+        if eff.scale_by:
+            rel *= rels[eff.scale_by]
+        err = float(eff.error(rel, inst))
+        model = f"{eff.model} ({eff.result}), estimated error {err:.2g} ≤ {share:.2g}"
+        if err > share:
+            if eff.exact is not None:
+                first_err = err
+                rel, err, how = eff.exact(inst)
+                if eff.scale_by:
+                    rel *= rels[eff.scale_by]
+                model = f"{how}: the {eff.model}'s error {first_err:.2g} exceeds {share:.2g}"
+            else:
+                model = f"{eff.model} ({eff.result}); its error {err:.2g} exceeds the share {share:.2g} " \
+                        "and the engine has no more complete model"
+        rels[eff.key] = rel
+        rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, rel, err, "kept", model))
+    for p in pending():
+        if p.applies(inst):
+            rows.append(Row(p.key, p.title, p.source, "", math.nan, None, math.nan, "not available",
+                            "not in the engine yet: not counted in the error"))
+    factor = math.prod(1 + r for r in rels.values())
+    vals = list(rels.values())
+    interaction = COUPLING * sum(abs(vals[i] * vals[j]) for i in range(len(vals)) for j in range(i + 1, len(vals)))
+    error = sum(r.error for r in rows if r.status != "not available") + interaction
+    return Budget(sc, inst, inst.T0 * factor, error, tuple(rows), interaction, len(built), total)
+
+
+# ----------------------------------------------------------------- output
+def _g(x: float | None, digits: int = 3) -> str:
+    if x is None:
+        return "—"
+    if isinstance(x, float) and math.isnan(x):
+        return "?"
+    if isinstance(x, float) and math.isinf(x):
+        return "(defines it)"
+    return f"{x:+.{digits}e}"
+
+
+def text(b: Budget, name: str) -> str:
+    sc, tol = b.scene, b.scene.wanted.tolerance
+    lines = [f"{name}"]
+    q = sc.wanted.quantities
+    if "period" in q:
+        lines.append(f"  period      {b.period:.12g} s   ± {b.error * b.period:.2g} s (relative {b.error:.2g})")
+    if "swing" in q:
+        lines.append(f"  swing time  {b.swing:.12g} s   ± {b.error * b.swing:.2g} s")
+    if "rate" in q:
+        lines.append(f"  rate        {b.rate:+.4g} s/day against {sc.wanted.target_period:g} s "
+                     f"(± {b.error * SECONDS_PER_DAY:.2g} s/day)")
+    verdict = "within" if b.within else "NOT within"
+    lines.append(f"  estimated error {b.error:.2g} is {verdict} the tolerance {tol:g}; "
+                 f"{b.built} of {b.total} Results built (the closure of the kept effects)")
+    lines.append(f"  base: rigid {b.inst.kind} pendulum, l = (a² + R²)/a = {b.inst.l:.9g} m, T0 = π√(l/g) = "
+                 f"{b.inst.T0:.12g} s")
+    lines.append("")
+    lines.append(f"  {'effect':<58} {'ΔT/T':>12} {'error':>10}  {'status':<13} source")
+    for r in b.rows:
+        val = r.value if r.status == "kept" else (r.estimate if r.status == "dropped" else None)
+        err = "?" if math.isnan(r.error) else f"{r.error:.2g}"
+        lines.append(f"  {r.title:<58} {_g(val):>12} {err:>10}  {r.status:<13} {r.source}")
+    if b.interaction:
+        lines.append(f"  {f'coupling of the kept effects ({COUPLING:g} × products)':<58} {'':>12} {b.interaction:>10.2g}")
+    lines.append("")
+    for r in b.rows:
+        lines.append(f"  {r.key}: {r.model}")
+    return "\n".join(lines)
+
+
+def as_json(b: Budget, name: str) -> dict:
+    def num(x):
+        return None if x is None or (isinstance(x, float) and not math.isfinite(x)) else x
+    return {
+        "scene": name, "swing_time_s": b.swing, "period_s": b.period, "rate_s_per_day": b.rate,
+        "relative_error": b.error, "tolerance": b.scene.wanted.tolerance, "within_tolerance": b.within,
+        "results_built": b.built, "results_total": b.total, "base": {"kind": b.inst.kind, "l_m": b.inst.l,
+                                                                     "T0_s": b.inst.T0},
+        "interaction": b.interaction,
+        "budget": [{"effect": r.key, "title": r.title, "source": r.source, "result": r.result or None,
+                    "estimate": num(r.estimate), "value": num(r.value), "error": num(r.error), "status": r.status,
+                    "model": r.model} for r in b.rows],
+    }

@@ -1,0 +1,117 @@
+"""The hardware scene: a pendulum described as an instrument (TOML, SI units), validated by pydantic.
+
+The schema is written once, here; ``docs/scenes.md`` shows it and :func:`json_schema`
+gives it as JSON Schema.  Every number is SI:
+kilograms, metres, seconds, radians, newtons, pascals.  Strict types: a string is
+never read as a number, a bool never as 0/1; NaN and ±inf are refused; unknown keys
+are refused.  The checks that join several keys (an inconsistent input) are in
+:meth:`Scene.consistent`.
+"""
+from __future__ import annotations
+
+import unicodedata
+from typing import Annotated, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+
+class Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
+
+
+def num(lo: float, hi: float, unit: str, doc: str, *, open_lo: bool = True, default=...):
+    """A float in (lo, hi] (or [lo, hi]), its unit and meaning in the schema's description."""
+    bound = {"gt": lo} if open_lo else {"ge": lo}
+    return Field(default, **bound, le=hi, description=f"{doc} [{unit}], in {'(' if open_lo else '['}{lo:g}, {hi:g}]")
+
+
+class Bob(Strict):
+    mass: float = num(1e-3, 1e4, "kg", "mass m of the pendulum")
+    a: float | None = num(1e-3, 100.0, "m", "distance from the pivot (knife edge, or the blade's lower clamp) "
+                          "to the centre of mass; not given with a thread (the thread sets it)", default=None)
+    R: float = num(0.0, 10.0, "m", "radius of gyration about the centre of mass", open_lo=False)
+
+
+class Knife(Strict):
+    kind: Literal["knife"]
+
+
+class Thread(Strict):
+    kind: Literal["thread"]
+    length: float = num(1e-2, 1e4, "m", "unstretched length λ from the suspension point to the centre of mass")
+    EA: float = num(1.0, 1e12, "N", "elasticity e of the thread: the tension that would double its length "
+                    "(Young's modulus × cross-section)")
+
+
+class Blade(Strict):
+    kind: Literal["blade"]
+    E: float = num(1e8, 1e13, "Pa", "Young's modulus of the blade")
+    thickness: float = num(1e-6, 1e-2, "m", "thickness of the blade")
+    width: float = num(1e-4, 1.0, "m", "total width of the blade(s)")
+    length: float = num(1e-3, 10.0, "m", "free length λ of the blade between its clamps")
+    mounting: Literal["direct", "inverted"] = Field("direct", description="direct (the bob hangs below the "
+                                                    "blade) or inverted (the bob stands on it)")
+
+
+Suspension = Annotated[Union[Knife, Thread, Blade], Field(discriminator="kind")]
+
+
+class Support(Strict):
+    compliance: float = num(0.0, 1e-3, "m/N", "horizontal compliance K of the support at the pivot", open_lo=False)
+    mass: float = num(0.0, 1e6, "kg", "mass M of the support that moves with the pivot", open_lo=False, default=0.0)
+
+
+class Drift(Strict):
+    rate: float = num(-1e3, 1e3, "m/s", "rate dl/dt at which the length grows (negative: shortens)", open_lo=False)
+
+
+class Wanted(Strict):
+    quantities: list[Literal["period", "swing", "rate"]] = Field(["period"], min_length=1, max_length=3,
+                                                                 description="what to report")
+    tolerance: float = num(1e-15, 1e-1, "1", "relative tolerance on the period")
+    target_period: float | None = num(1e-3, 1e4, "s", "the period the instrument is meant to have (for "
+                                      "the rate in s/day)", default=None)
+
+
+class Scene(Strict):
+    name: str = Field("", max_length=200, description="a title")
+    g: float = num(9.7, 9.9, "m/s^2", "local acceleration of gravity", open_lo=False)
+    amplitude: float = num(0.0, 1.0, "rad", "semi-amplitude α of the swing", open_lo=False)
+    bob: Bob
+    suspension: Suspension
+    support: Support | None = None
+    drift: Drift | None = None
+    wanted: Wanted
+
+    @model_validator(mode="after")
+    def consistent(self) -> "Scene":
+        """Inputs that contradict each other are errors (each message names the keys)."""
+        sus = self.suspension
+        if any(unicodedata.category(ch) in ("Cc", "Cf", "Cs", "Co", "Cn") for ch in self.name):
+            raise ValueError("name: must be text without control or format characters")
+        if isinstance(sus, Thread):
+            if self.bob.a is not None:
+                raise ValueError(f"bob.a = {self.bob.a:g} is given with a thread suspension: the thread's length "
+                                 "sets it (remove bob.a)")
+        elif self.bob.a is None:
+            raise ValueError(f"bob.a: required with a {sus.kind} suspension (the distance from the pivot to "
+                             "the centre of mass, m)")
+        if isinstance(sus, Blade) and sus.mounting == "inverted":
+            raise ValueError("suspension.mounting = 'inverted': no Result of the engine treats the inverted "
+                             "blade yet (expected 'direct')")
+        if isinstance(sus, Blade) and sus.thickness >= sus.width:
+            raise ValueError(f"suspension.thickness = {sus.thickness:g} is not smaller than suspension.width = "
+                             f"{sus.width:g}: not a blade")
+        if "rate" in self.wanted.quantities and self.wanted.target_period is None:
+            raise ValueError("wanted.target_period: required when wanted.quantities asks for 'rate' (s)")
+        if self.wanted.target_period is not None and "rate" not in self.wanted.quantities:
+            raise ValueError("wanted.target_period is given but wanted.quantities does not ask for 'rate'")
+        if len(set(self.wanted.quantities)) != len(self.wanted.quantities):
+            raise ValueError(f"wanted.quantities = {self.wanted.quantities} repeats a quantity")
+        return self
+
+
+def json_schema() -> dict:
+    """The schema as JSON Schema (for editors and for docs/scenes.md)."""
+    return Scene.model_json_schema()
+
