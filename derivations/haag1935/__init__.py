@@ -3,6 +3,7 @@ and chapter III, the uniform blade (eqs. (156)–(183))."""
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
+from . import ch7_gravity
 
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
@@ -12,8 +13,11 @@ CHAPTER_1 = (
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
 SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
+CHAPTER_7 = (Section.of(ch7_gravity, "Chapter VII. The gravity pendulum with direct suspension (255)–(285)"),)
+SECTIONS = SECTIONS + CHAPTER_7
 _CH1 = {sec.module for sec in CHAPTER_1}
-_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):]}
+_CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):len(SECTIONS) - len(CHAPTER_7)]}
+_CH7 = {sec.module for sec in CHAPTER_7}
 
 
 def _eqs(lo: int, hi: int, modules: set):
@@ -38,6 +42,8 @@ MEMOIR = Memoir(
         ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, _CH3)),
         ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
+        ("Chapter VII. The gravity pendulum with direct suspension (255)–(285), n°82–93",
+         lambda spec: spec.id in {s.id for sec in CHAPTER_7 for s in sec.specs}),
     )),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared

@@ -1,0 +1,99 @@
+"""Haag 1935, chapters VII–VIII: the check declarations (order in ε against the eigenproblem of :mod:`.truth`)."""
+from __future__ import annotations
+
+import mpmath as mp
+import sympy as sp
+
+from pendsym import blade, checks, suspension, verify
+from . import truth
+
+EPS = checks.Geometric("1e-6", "1e-3")
+U_PATH = {"quick": ("1/10", "3/20", "1/5", "3/10"), "full": ("1/10", "1/8", "3/20", "1/5", "1/4", "3/10")}
+
+
+def env_at(key: str, sign: int, eps, dps: int = 30) -> dict:
+    """The truth's state at ε, plus G2(K = 0) = ∫w²/M by quadrature on the shot blade and W/(mg) of the slow
+    mode (pendsym.suspension.energy, θ = 1)."""
+    env = truth.state(key, sign, eps, dps)
+    sol = truth.shot(key, sign, dps)
+    env["G_2"] = sol.G(2, 0)
+    env["W/(mg)"] = suspension.energy(truth.direct(key, sign, 0, dps), -(env["a"] + env["z'"]), 1)
+    return env
+
+
+def order(quantity, what: str, expected: float, key: str = "u=2", sign: int = 1, scale=None,
+          with_energy: bool = False) -> checks.Order:
+    """Order in ε of |quantity(truth) − formula| at a = a1 + sign·ελ on the blade ``key``; both divided by
+    ``scale(env)`` when given."""
+    state = env_at if with_energy else truth.state
+
+    def at(expr, p):
+        env = state(key, sign, p)
+        value = verify.value_at(expr, env)
+        return value / scale(env) if scale else value
+
+    def value(p, dps):
+        env = state(key, sign, p, dps)
+        q = quantity(env, key, sign, p, dps)
+        return q / scale(env) if scale else q
+    return checks.Order(param="varepsilon", values=EPS, truth=value, at=at, expected=expected,
+                        truth_desc=f"{truth.MODEL}; {what}; blade {key}, {'direct' if sign > 0 else 'inverted'}",
+                        params=(("blade", key), ("R", truth.R_VALUE), ("g", str(sign * float(truth.G_VALUE)))))
+
+
+def on(name: str):
+    """A quantity of the truth's state, by name."""
+    return lambda env, *_: env[name]
+
+
+def sensitivity_times_eps(env, key, sign, p, dps):
+    return mp.mpf(p) * truth.sensitivity(key, sign, p, dps)
+
+
+def suppleness(env, key, sign, p, dps):
+    """S = W'/W of the slow mode: W = mg·energy (θ = 1), W + W' = ½qᵀKq the potential (n°23, n°101 note)."""
+    sus = truth.direct(key, sign, 0, dps)
+    with mp.workdps(sus.wdps):
+        q = mp.matrix([-(env["a"] + env["z'"]), 1])
+        potential = (q.T * suspension.stiffness_matrix(sus, env["a"], 1, env["g"]) * q)[0] / 2
+        strain = env["g"] * suspension.energy(sus, q[0], 1)
+        return (potential - strain) / strain
+
+
+def blade_section(env) -> dict:
+    """m = 1 kg, e = 0.3 mm, h = 1 cm and E from EI = mgM = mgλ²/u², I = e³h/12 (156), for forms in E, e, h, m."""
+    m, e, h = mp.mpf(1), mp.mpf("0.0003"), mp.mpf("0.01")
+    return {"m": m, "e": e, "h": h, "E": 12 * m * abs(env["g"]) * env["lambda"] ** 2 / (env["u"] ** 2 * e**3 * h)}
+
+
+def u_path(quantity, what: str, expected: float, eps_of_u, scale, sign: int = 1) -> checks.Order:
+    """Order in u along ε = eps_of_u(u) on the uniform blade (u → 0 results, n°85–86)."""
+    def at(expr, p):
+        env = truth.state(f"u={p}", sign, eps_of_u(sp.Rational(p)))
+        return verify.value_at(expr, dict(env, **blade_section(env))) / scale(env)
+
+    def value(p, dps):
+        key, eps = f"u={p}", eps_of_u(sp.Rational(p))
+        env = truth.state(key, sign, eps, dps)
+        return quantity(env, key, sign, eps, dps) / scale(env)
+    return checks.Order(param="u", values=lambda level: [sp.Rational(x) for x in U_PATH[level]], truth=value,
+                        at=at, expected=expected, truth_desc=f"{truth.MODEL}; {what}; uniform blade λ = 1/10",
+                        params=(("R", truth.R_VALUE),))
+
+
+def C_values(sign: int) -> checks.Values:
+    """(285)/(317): C = (wλ − ∫w'^4)/(wλ − ∫w'^2) by quadrature on the shot uniform blade (direct or inverted)."""
+    us = ("7/10", "2", "43/10") if sign > 0 else ("1/2", "1", "3/2")
+
+    def C_of(key, dps):
+        sol = truth.shot(key, sign, dps)
+        with mp.workdps(sol.wdps):
+            return (sol.wl - sol.F(4, 0)) / (sol.wl - sol.F(2, 0))
+
+    def points(level, dps):
+        for x in us:
+            yield checks.Point(f"u={x}", {"u": suspension.number(sp.Rational(x)), "lambda": mp.mpf("0.1")},
+                               C_of(f"u={x}", dps))
+    return checks.Values(truth=f"shot {'inverted ' if sign < 0 else ''}uniform blade (pendsym.blade, M = "
+                               f"{'−' if sign < 0 else ''}(λ/u)²), wλ and ∫w'^n by Gauss–Legendre quadrature",
+                         points=points, confirm=lambda dps: {"C": C_of(f"u={us[0]}", dps)}, kind="quadrature")

@@ -1,0 +1,106 @@
+"""Haag 1935, chapter VII, n°82–91: the formulas as printed (OCR file 001, lines ~2143–2330), with readings."""
+from __future__ import annotations
+
+import sympy as sp
+
+from pendsym.result import Reading
+from ..symbols import E, G_2, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
+from .symbols import a_r, eps, eps_p, l_syn
+
+U1, U2 = 1 / sp.sinh(u), 1 / sp.tanh(u)
+READ_V1 = Reading("z + a − v_1", "z + a − v_λ: the subscript 1 is OCR for λ", certain=False)
+READ_ALPHA0 = Reading("α_0", "w_0 (in the unnumbered Q at z'): OCR for ω_0")
+READ_GPRIME = Reading("g'", "g: the prime is OCR residue (n'², or the g' of (269) read too early)", certain=False)
+READ_E2 = Reading("E e^2 h", "E e^2 h kept as printed; (156) gives I = e^3h/12, so e^3 is expected", certain=False)
+
+
+def eq255():
+    return (a_r - a1) * (z**2 + R**2) / (z * (z + a_r - vl))
+
+
+def eq256():
+    return eps * lam
+
+
+def eq257():
+    return w0 * (1 + eps_p)
+
+
+def eq258():
+    return eps * lam * (beta1 * w0 - w0**2 - R**2) / (w0 * (w0**2 + R**2))
+
+
+def eq258_ends():
+    return eps * lam * (lam - v0 - wl - R**2 / w0) / (w0**2 + R**2)
+
+
+def eq259():
+    return -R**2 / w0 * (1 - eps_p)
+
+
+def eq260():
+    return -eps * lam * w0 / (w0**2 + R**2)
+
+
+def eq260_foci():
+    return eps * lam / (z - zp)
+
+
+def eq261():
+    return (zp - z) / beta1
+
+
+def eq262():
+    return G_2 / (eps * lam)
+
+
+def eq262_energy():
+    return 2 * W_over_mg / (lam * eps)
+
+
+def eq263():
+    return (U1**2 + U2 / u) / (2 * eps)
+
+
+def eq264():
+    return 1 / (eps * u**2)
+
+
+def eq264_distance():
+    return -a_r / (a_r - a1)
+
+
+def eq265():
+    return eps * g * lam / (R**2 + w0**2)
+
+
+def eq266():
+    return g / beta1 * (1 + w0**2 / R**2)
+
+
+def eq267():
+    return g * eps * lam / (R**2 + a_r**2)
+
+
+def eq267_l():
+    return g * eps * lam / (a_r * l_syn)
+
+
+def eq267_expanded():
+    return g / l_syn + g * lam / (a_r * l_syn * u**2)
+
+
+def eq268():
+    return g / l_syn + E * e**2 * h / (12 * m * a_r * l_syn * lam)
+
+
+def suppleness_91():
+    return sp.Integer(-1)
+
+
+def C_285():
+    return sp.Rational(3, 4) * (2 * U2 + U2 * U1**2 - u * U1**4) / (U2 + u * U1**2)
+
+
+def C_285_exponential():
+    return sp.Rational(3, 8) * (sp.sinh(4 * u) - 4 * u) / (sp.sinh(u) ** 2 * (sp.sinh(2 * u) + 2 * u))
