@@ -3,7 +3,7 @@ and chapter III, the uniform blade (eqs. (156)–(183))."""
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch3_uniform
-from . import ch7_gravity
+from . import ch7_gravity, ch8_inverted
 
 CHAPTER_1 = (
     Section.of(ch1_blade, "Chapter I. The equations of the blade and the functions v, w (1)–(20)"),
@@ -13,7 +13,8 @@ CHAPTER_1 = (
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
 SECTIONS = CHAPTER_1 + tuple(Section.of(module, title) for module, title in ch3_uniform.sections())
-CHAPTER_7 = (Section.of(ch7_gravity, "Chapter VII. The gravity pendulum with direct suspension (255)–(285)"),)
+CHAPTER_7 = (Section.of(ch7_gravity, "Chapter VII. The gravity pendulum with direct suspension (255)–(285)"),
+             Section.of(ch8_inverted, "Chapter VIII. The inverted blade (307)–(317)"))
 SECTIONS = SECTIONS + CHAPTER_7
 _CH1 = {sec.module for sec in CHAPTER_1}
 _CH3 = {sec.module for sec in SECTIONS[len(CHAPTER_1):len(SECTIONS) - len(CHAPTER_7)]}
@@ -43,7 +44,9 @@ MEMOIR = Memoir(
         ("Chapter III. Foci, K and the period of the uniform blade (n°50)", _eqs(30, 37, _CH3)),
         ("Chapter III. Shape, fatigue, I_λ and J (171)–(183)", _eqs(171, 183, _CH3)),
         ("Chapter VII. The gravity pendulum with direct suspension (255)–(285), n°82–93",
-         lambda spec: spec.id in {s.id for sec in CHAPTER_7 for s in sec.specs}),
+         lambda spec: spec.id in {s.id for s in CHAPTER_7[0].specs}),
+        ("Chapter VIII. The inverted blade (307)–(317), n°100–103",
+         lambda spec: spec.id in {s.id for s in CHAPTER_7[1].specs}),
     )),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared

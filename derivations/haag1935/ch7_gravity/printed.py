@@ -4,7 +4,7 @@ from __future__ import annotations
 import sympy as sp
 
 from pendsym.result import Reading
-from ..symbols import E, G_2, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
+from ..symbols import E, G_2, a, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
 from .symbols import a_r, eps, eps_p, l_syn
 
 U1, U2 = 1 / sp.sinh(u), 1 / sp.tanh(u)
@@ -15,7 +15,7 @@ READ_E2 = Reading("E e^2 h", "E e^2 h kept as printed; (156) gives I = e^3h/12, 
 
 
 def eq255():
-    return (a_r - a1) * (z**2 + R**2) / (z * (z + a_r - vl))
+    return (a - a1) * (z**2 + R**2) / (z * (z + a - vl))
 
 
 def eq256():
