@@ -46,8 +46,14 @@ def on(name: str):
     return lambda env, *_: env[name]
 
 
-def sensitivity_times_eps(env, key, sign, p, dps):
-    return mp.mpf(p) * truth.sensitivity(key, sign, p, dps)
+def sensitivity(env, key, sign, p, dps):
+    """G = −d log n²/d log g of the slow mode (:func:`.truth.sensitivity`)."""
+    return truth.sensitivity(key, sign, p, dps)
+
+
+def inverse_eps(env):
+    """1/ε, the size of G: residuals of εG."""
+    return 1 / env["varepsilon"]
 
 
 def suppleness(env, key, sign, p, dps):

@@ -11,7 +11,7 @@ from ..ch1_motion import truth as ch1_truth
 from ..common import READ_VW, rid, src
 from ..symbols import a1, wl
 from . import derivation, printed
-from .checks_gravity import C_values, on, order, sensitivity_times_eps, suppleness, u_path
+from .checks_gravity import C_values, inverse_eps, on, order, sensitivity, suppleness, u_path
 from .symbols import eps, eps_p, l_syn, a_r
 
 EPS_PRIME = ((eps_p, printed.eq258()),)
@@ -67,24 +67,25 @@ def specs() -> tuple[Spec, ...]:
              check=both(lambda key: order(on("K'"), "K' = −n'²z/g of the fast mode; z, z' its nodes", 1, key))),
         Spec(rid(262, "G"), "G = G2/(ελ) (principal part)", src(84, "262"), "G", derivation.G_262,
              deps=(rid(62, "G"), rid(260, "K")), printed=printed.eq262,
-             check=both(lambda key: order(sensitivity_times_eps, "εG, G = −d log n²/d log g (stencil); G2(0) by "
-                                          "quadrature", 1, key, scale=None, with_energy=True)),
+             check=both(lambda key: order(sensitivity, "εG, G = −d log n²/d log g (stencil); G2(0) by "
+                                          "quadrature", 1, key, scale=inverse_eps, with_energy=True)),
              note="Order check of εG (truth ε·G, formula ε·G2/(ελ)); G2 = ∫w²/M at K = 0, its ε → 0 value."),
         Spec(rid(262, "G_energy"), "G = 2W/(mgλε)", src(84, "262"), "G", derivation.G_262_energy,
              deps=(rid(262, "G"),), printed=printed.eq262_energy,
-             check=order(sensitivity_times_eps, "εG, W/(mg) = suspension.energy of the slow mode (θ = 1)", 1,
-                         TAPERED, with_energy=True)),
+             check=order(sensitivity, "εG, W/(mg) = suspension.energy of the slow mode (θ = 1)", 1,
+                         TAPERED, scale=inverse_eps, with_energy=True)),
         Spec(rid(263, "G"), "G = (U1² + U2/u)/(2ε), uniform blade", src(85, "263"), "G", derivation.G_263,
              deps=(rid(262, "G"), rid(166, "Gamma2")), printed=printed.eq263,
-             check=order(sensitivity_times_eps, "εG, G = −d log n²/d log g (stencil)", 1, "u=2", with_energy=True)),
+             check=order(sensitivity, "εG, G = −d log n²/d log g (stencil)", 1, "u=2", scale=inverse_eps,
+                         with_energy=True)),
         Spec(rid(264, "G"), "G = 1/(εu²), u small", src(85, "264"), "G", derivation.G_264, deps=(rid(263, "G"),),
              printed=printed.eq264,
-             check=u_path(sensitivity_times_eps, "εu²G along ε = u⁴/10", 4, lambda x: x**4 / 10,
-                          lambda env: env["varepsilon"] * env["u"] ** 2)),
+             check=u_path(sensitivity, "εu²G along ε = u⁴/10", 4, lambda x: x**4 / 10,
+                          lambda env: 1 / (env["varepsilon"] * env["u"] ** 2))),
         Spec(rid(264, "G_distance"), "G = −a/(a − a1), u small", src(85, "264"), "G", derivation.G_264_distance,
              deps=(rid(264, "G"), rid(159, "wl")), printed=printed.eq264_distance,
-             check=u_path(sensitivity_times_eps, "εu²G along ε = u⁴/10, a = a1 + ελ of the truth", 2,
-                          lambda x: x**4 / 10, lambda env: env["varepsilon"] * env["u"] ** 2),
+             check=u_path(sensitivity, "εu²G along ε = u⁴/10, a = a1 + ελ of the truth", 2,
+                          lambda x: x**4 / 10, lambda env: 1 / (env["varepsilon"] * env["u"] ** 2)),
              note="Relative error u²/3 (a1 = −λ/u² − λ/3 + …): order 2 where 1/(εu²) has order 4."),
         Spec(rid(265, "n2"), "n² = εgλ/(R² + w0²)", src(86, "265"), "n^2", derivation.n2_265, deps=(rid(260, "K"),),
              printed=printed.eq265, readings=(READ_VW,),

@@ -8,7 +8,7 @@ import mpmath as mp
 from pendsym import checks
 from pendsym.result import Spec
 
-from ..ch7_gravity.checks_gravity import C_values, order, sensitivity_times_eps
+from ..ch7_gravity.checks_gravity import C_values, inverse_eps, order, sensitivity
 from ..common import READ_VW, rid, src
 from . import derivation, printed, truth
 
@@ -87,8 +87,8 @@ def specs() -> tuple[Spec, ...]:
              check=truth.on_u(truth.shot_end("wl"), "wλ of the shot blade, M < 0")),
         Spec(rid(314, "G"), "G = (1/sin²u + cot u/u)/(2ε), inverted", src(103, "314"), "G", derivation.G_314,
              deps=(rid(263, "G"),), printed=printed.G,
-             check=order(sensitivity_times_eps, "εG, G = −d log n²/d log |g| (stencil), a = a1 − ελ", 1, "u=1",
-                         sign=-1)),
+             check=order(sensitivity, "εG, G = −d log n²/d log |g| (stencil), a = a1 − ελ", 1, "u=1",
+                         sign=-1, scale=inverse_eps)),
         Spec(rid(317, "C"), "C = (3/8)(4u − sin 4u)/(sin²u(2u + sin 2u)), inverted", src(103, "317"), "C",
              derivation.C_317, printed=printed.C, check=C_values(-1),
              note="Derived from dsolve with M < 0 (circular functions), not by u → iu."),

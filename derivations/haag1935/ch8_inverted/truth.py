@@ -34,10 +34,16 @@ def eigenvalues(u_value, a, dps: int) -> list:
 
 
 def lower_end(guess: str, dps: int = 30, a="-1") -> mp.mpf:
-    """The u where 1/n'² (the eigenvalue of largest modulus) crosses zero near ``guess`` (β1 = 0)."""
+    """The u where 1/n'² (the eigenvalue of largest modulus) crosses zero near ``guess`` (β1 = 0).
+
+    There the blade clamped at both ends buckles (tan(u/2) = u/2 is its antisymmetric buckling condition):
+    the direct solve is singular at the root itself, where 1/n'² = 0."""
     with mp.workdps(dps + 10):
         def f(x):
-            values = eigenvalues(x, mp.mpf(a), dps)
+            try:
+                values = eigenvalues(x, mp.mpf(a), dps)
+            except blade.SingularBlade:     # at the end itself the clamped blade buckles: 1/n'² = 0
+                return mp.mpf(0)
             return 1 / max(values, key=abs)
         return mp.findroot(f, (mp.mpf(guess) - mp.mpf("0.01"), mp.mpf(guess) + mp.mpf("0.01")), solver="secant")
 
