@@ -51,6 +51,16 @@ def sensitivity(env, key, sign, p, dps):
     return truth.sensitivity(key, sign, p, dps)
 
 
+def g_correction(env, key, sign, p, dps):
+    """dg/g = −(2/G) dT/T of a 1° warming, both from the truth (:func:`.truth.g_correction`)."""
+    return truth.g_correction(key, sign, p, dps)
+
+
+def temperature(env, key, sign, p, dps):
+    """d log T per degree of the slow mode (:func:`.truth.temperature`)."""
+    return truth.temperature(key, sign, p, dps)
+
+
 def inverse_eps(env):
     """1/ε, the size of G: residuals of εG."""
     return 1 / env["varepsilon"]

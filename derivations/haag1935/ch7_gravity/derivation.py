@@ -13,7 +13,7 @@ import sympy as sp
 
 from .. import ch1_model
 from ..common import rid
-from ..symbols import (E, G_2, K, K_prime, R, W_over_mg, a, a1, beta1, e, g, h, lam, m, mg, s, u, v0, vl, w0, wl,
+from ..symbols import (E, G_2, K, K_prime, M_lambda, R, W_over_mg, a, a1, beta1, e, g, h, lam, m, mg, s, u, v0, vl, w0, wl,
                        z, zp)
 from .symbols import a_r, eps, eps_p, l_syn
 
@@ -189,3 +189,29 @@ def C_285_same(deps) -> sp.Expr:
     """(285), second form: the same C (the printed forms differ only by their writing)."""
     return derived_of(deps, 285, "C")
 
+
+
+# ---------------------------------------------------------------- n°87: (270)–(273)
+def dT_270(deps) -> sp.Expr:
+    """(270): (60) at a = a1 + ελ, K of (260): the principal part in ε."""
+    expr = derived_of(deps, 60, "dT").subs(a, -wl + eps * lam).subs(K, derived_of(deps, 260, "K"))
+    return sp.factor(sp.limit(sp.simplify(expr * eps), eps, 0)) / eps
+
+
+def dg_271(deps) -> sp.Expr:
+    """(271): dg/g = −(2/G) dT/T (61) with (270) and G of (262)."""
+    return sp.expand(sp.simplify(-2 * derived_of(deps, 270, "dT") / derived_of(deps, 262, "G")))
+
+
+def dg_272(deps) -> sp.Expr:
+    """(272): (271) for the uniform blade: G2 = λΓ2(k = 0) ((163), (166)), wλ of (159), M_λ = λ²/u² (156)."""
+    Gamma2 = derived_of(deps, 166, "Gamma2")
+    k_symbol, = [x for x in Gamma2.free_symbols if x.name == "k"]
+    expr = derived_of(deps, 271, "dg").subs({G_2: lam * Gamma2.subs(k_symbol, 0), wl: derived_of(deps, 159, "wl"),
+                                             M_lambda: lam**2 / u**2})
+    return sp.simplify(expr)
+
+
+def dg_273(deps) -> sp.Expr:
+    """(273): (272) as u → 0."""
+    return sp.limit(derived_of(deps, 272, "dg"), u, 0)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import sympy as sp
 
 from pendsym.result import Reading
-from ..symbols import E, G_2, a, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
+from ..symbols import E, G_2, M_lambda, a, alpha_blade, alpha_rod, beta_t, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
 from .symbols import a_r, eps, eps_p, l_syn
 
 U1, U2 = 1 / sp.sinh(u), 1 / sp.tanh(u)
@@ -104,3 +104,23 @@ def C_285():
 
 def C_285_exponential():
     return sp.Rational(3, 8) * (sp.sinh(4 * u) - 4 * u) / (sp.sinh(u) ** 2 * (sp.sinh(2 * u) + 2 * u))
+
+
+READ_BETA = Reading("β (n°87)", "β_t: the thermo-elastic coefficient β of n°14, not the ordinate β of A")
+READ_EPS = Reading("ϵ", "ε of (256)")
+
+
+def eq270():
+    return (alpha_rod * wl + alpha_blade * (-lam + lam * wl**2 / M_lambda - 4 * G_2) - beta_t * G_2) / (2 * eps * lam)
+
+
+def eq271():
+    return beta_t + alpha_blade * (4 + lam / G_2 * (1 - wl**2 / M_lambda)) - alpha_rod * wl / G_2
+
+
+def eq272():
+    return beta_t + 2 * (alpha_blade * (u * U1**2 + 2 * U2) - alpha_rod * U2) / (u * U1**2 + U2)
+
+
+def eq273():
+    return beta_t + 3 * alpha_blade - alpha_rod

@@ -11,7 +11,7 @@ from ..ch1_motion import truth as ch1_truth
 from ..common import READ_VW, rid, src
 from ..symbols import a1, wl
 from . import derivation, printed
-from .checks_gravity import C_values, inverse_eps, on, order, sensitivity, suppleness, u_path
+from .checks_gravity import C_values, g_correction, inverse_eps, on, order, sensitivity, suppleness, temperature, u_path
 from .symbols import eps, eps_p, l_syn, a_r
 
 EPS_PRIME = ((eps_p, printed.eq258()),)
@@ -110,6 +110,22 @@ def specs() -> tuple[Spec, ...]:
              defs=SYNCHRONOUS, readings=(printed.READ_GPRIME, printed.READ_E2),
              check=u_path(on("n^2"), "π²/T² = n² over gεu⁴/λ along ε = u; m = 1 kg, e = 0.3 mm, h = 1 cm, E from "
                           "EI = mgλ²/u² (156)", 1, lambda x: x, n2_scale)),
+        Spec(rid(270, "dT"), "dT/T per degree, ε → 0", src(87, "270"), r"\frac{dT}{T}", derivation.dT_270,
+             deps=(rid(60, "dT"), rid(260, "K")), printed=printed.eq270,
+             readings=(printed.READ_BETA, printed.READ_EPS, READ_VW),
+             check=order(temperature, "εdT/T, d log T per degree by a 5-point stencil in the temperature (λ, M, a, R "
+                                      "warmed)", 1, "u=2", scale=inverse_eps, with_energy=True)),
+        Spec(rid(271, "dg"), "dg/g correction per degree", src(87, "271"), r"\frac{dg}{g}", derivation.dg_271,
+             deps=(rid(270, "dT"), rid(262, "G")), printed=printed.eq271, readings=(printed.READ_BETA, READ_VW),
+             check=order(g_correction, "dg/g = −(2/G)dT/T, both from the truth", 1, "u=2", with_energy=True)),
+        Spec(rid(272, "dg"), "dg/g correction, uniform blade", src(87, "272"), r"\frac{dg}{g}", derivation.dg_272,
+             deps=(rid(271, "dg"), rid(166, "Gamma2"), rid(159, "wl")), printed=printed.eq272,
+             readings=(printed.READ_BETA,),
+             check=order(g_correction, "dg/g = −(2/G)dT/T, both from the truth", 1, "u=2")),
+        Spec(rid(273, "dg"), "dg/g = β + 3α − α', u small", src(87, "273"), r"\frac{dg}{g}", derivation.dg_273,
+             deps=(rid(272, "dg"),), printed=printed.eq273, readings=(printed.READ_BETA,),
+             check=u_path(g_correction, "dg/g = −(2/G)dT/T along ε = u²/10", 2, lambda x: x**2 / 10,
+                          lambda env: 1)),
         Spec(rid(82, "S_gravity"), "S = −1 as ε → 0 (n°91)", src(91, None), "S", derivation.S_91,
              deps=(rid(82, "S"), rid(260, "K")), printed=printed.suppleness_91,
              check=both(lambda key: order(suppleness, "S = W'/W of the slow mode: W = strain energy, W + W' = "

@@ -82,6 +82,8 @@ def numbers(sus_key: str, sign: int, dps: int = 30) -> dict:
            "a_1": critical_distance(sus)}
     if sus_key.startswith("u="):
         out["u"] = suspension.number(sp.Rational(sus_key[2:]))
+    out["M_lambda"] = sol.M_at(sol.blade.length)
+    out.update({name: suspension.number(value) for name, value in TEMPERATURE.items()})
     return out
 
 
@@ -110,3 +112,38 @@ def sensitivity(key: str, sign: int, eps, dps: int = 30) -> mp.mpf:
         def log_n2(k):
             return mp.log(eigenmodes(direct(key, sign, k, dps), a, env["R"], env["g"] * (1 + k * h))[0][0])
         return -(8 * (log_n2(1) - log_n2(-1)) - (log_n2(2) - log_n2(-2))) / (12 * h)
+
+
+# ---------------------------------------------------------------- temperature (n°87, n°103)
+# per degree: dλ/λ = α, da/a = dR/R = α', dE/E = β, dI/I = 4α (n°14); a steel blade and a brass-like rod
+ALPHA, ALPHA_ROD, BETA_T = sp.Rational(11, 10**6), sp.Rational(9, 10**6), sp.Rational(-24, 10**5)
+TEMPERATURE = {"alpha": ALPHA, "alpha'": ALPHA_ROD, "beta_t": BETA_T}
+H_DEGREE = sp.Rational(1, 10**6)     # step of the temperature stencil, in degrees
+
+
+@functools.lru_cache(maxsize=64)
+def warmed(key: str, sign: int, k: int, dps: int = 30) -> suspension.Suspension:
+    """The uniform blade ``key`` after kH degrees: λ(1 + αkH), M(1 + (β + 4α)kH) (M = EI/(mg), (1))."""
+    base = base_blade(key, sign)
+    step = k * H_DEGREE
+    return suspension.solve(blade.Blade(base.length * (1 + ALPHA * step), base.M * (1 + (BETA_T + 4 * ALPHA) * step)),
+                            dps)
+
+
+def temperature(key: str, sign: int, eps, dps: int = 30) -> mp.mpf:
+    """d log T per degree of the slow mode (n°14): a, R grow by α', the blade as :func:`warmed`, g fixed;
+    the pendulum placed at a = a1 ± ελ before the warming.  5-point stencil in the temperature."""
+    env = numbers(key, sign, dps)
+    with mp.workdps(direct(key, sign, 0, dps).wdps):
+        a = env["a_1"] + sign * mp.mpf(eps) * env["lambda"]
+        h, rod = suspension.number(H_DEGREE), suspension.number(ALPHA_ROD)
+
+        def log_T(k):
+            grown = 1 + rod * k * h
+            return -mp.log(eigenmodes(warmed(key, sign, k, dps), a * grown, env["R"] * grown, env["g"])[0][0]) / 2
+        return (8 * (log_T(1) - log_T(-1)) - (log_T(2) - log_T(-2))) / (12 * h)
+
+
+def g_correction(key: str, sign: int, eps, dps: int = 30) -> mp.mpf:
+    """The correction dg/g = −(2/G) dT/T of a 1° warming (n°87), both from the truth."""
+    return -2 * temperature(key, sign, eps, dps) / sensitivity(key, sign, eps, dps)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import sympy as sp
 
 from pendsym.result import Reading
-from ..symbols import lam, u
+from ..symbols import alpha_blade, alpha_rod, beta_t, lam, u
 from ..ch7_gravity.symbols import eps
 
 READ_313 = Reading("v_λ = −λ/(u tang u) (third)", "w_λ: the third formula of (313) is w_λ (OCR or misprint)",
@@ -50,3 +50,7 @@ def G():
 
 def C():
     return sp.Rational(3, 8) * (4 * u - sp.sin(4 * u)) / (sp.sin(u) ** 2 * (2 * u + sp.sin(2 * u)))
+
+
+def dg():
+    return beta_t + 2 * (2 * alpha_blade * (u + sp.sin(2 * u)) - alpha_rod * sp.sin(2 * u)) / (2 * u + sp.sin(2 * u))

@@ -8,7 +8,7 @@ import mpmath as mp
 from pendsym import checks
 from pendsym.result import Spec
 
-from ..ch7_gravity.checks_gravity import C_values, inverse_eps, order, sensitivity
+from ..ch7_gravity.checks_gravity import C_values, g_correction, inverse_eps, order, sensitivity
 from ..common import READ_VW, rid, src
 from . import derivation, printed, truth
 
@@ -78,17 +78,21 @@ def specs() -> tuple[Spec, ...]:
              check=truth.on_u(truth.critical, "a1 where det K = 0 (direct stiffness)")),
         Spec(rid(313, "v0"), "v0 = −vλ = (λ/u) tan(u/2)", src(103, "313"), "v_0", derivation.by_rotation(159, "v0"),
              deps=(rid(159, "v0"),), printed=printed.v0, readings=(READ_VW,),
-             check=truth.on_u(truth.shot_end("v0"), "v0 of the shot blade, M < 0")),
+             check=truth.on_u(truth.shot_end("v0"), "v0 of the shot blade", model=truth.SHOT)),
         Spec(rid(313, "w0"), "w0 = −λ/(u sin u)", src(103, "313"), "w_0", derivation.by_rotation(159, "w0"),
              deps=(rid(159, "w0"),), printed=printed.w0, readings=(READ_VW,),
-             check=truth.on_u(truth.shot_end("w0"), "w0 of the shot blade, M < 0")),
+             check=truth.on_u(truth.shot_end("w0"), "w0 of the shot blade", model=truth.SHOT)),
         Spec(rid(313, "wl"), "wλ = −λ/(u tan u)", src(103, "313"), r"w_\lambda", derivation.by_rotation(159, "wl"),
              deps=(rid(159, "wl"),), printed=printed.wl, readings=(printed.READ_313, READ_VW),
-             check=truth.on_u(truth.shot_end("wl"), "wλ of the shot blade, M < 0")),
+             check=truth.on_u(truth.shot_end("wl"), "wλ of the shot blade", model=truth.SHOT)),
         Spec(rid(314, "G"), "G = (1/sin²u + cot u/u)/(2ε), inverted", src(103, "314"), "G", derivation.G_314,
              deps=(rid(263, "G"),), printed=printed.G,
              check=order(sensitivity, "εG, G = −d log n²/d log |g| (stencil), a = a1 − ελ", 1, "u=1",
                          sign=-1, scale=inverse_eps)),
+        Spec(rid(315, "dg"), "dg/g correction per degree, inverted uniform blade", src(103, "315"), r"\frac{dg}{g}",
+             derivation.by_rotation(272, "dg"), deps=(rid(272, "dg"),), printed=printed.dg,
+             check=order(g_correction, "dg/g = −(2/G)dT/T of the inverted blade (g < 0), both from the truth", 1,
+                         "u=1", sign=-1)),
         Spec(rid(317, "C"), "C = (3/8)(4u − sin 4u)/(sin²u(2u + sin 2u)), inverted", src(103, "317"), "C",
              derivation.C_317, printed=printed.C, check=C_values(-1),
              note="Derived from dsolve with M < 0 (circular functions), not by u → iu."),

@@ -66,12 +66,15 @@ def critical(k: str, dps: int = 30) -> mp.mpf:
     return truth.critical_distance(truth.direct(k, SIGN, 0, dps))
 
 
-def on_u(quantity, what: str, us=("1/2", "1", "5/2")) -> checks.Values:
+SHOT = "pendsym.blade: v, w of (9)–(10) shot (mpmath odefun) for M = −(λ/u)² < 0, 30 digits, confirmed at 45"
+
+
+def on_u(quantity, what: str, us=("1/2", "1", "5/2"), model: str = truth.MODEL) -> checks.Values:
     def points(level, dps):
         for x in us:
             yield checks.Point(f"u={x}", {"u": suspension.number(sp.Rational(x)), "lambda": mp.mpf("0.1")},
                                quantity(f"u={x}", dps))
-    return checks.Values(truth=f"{truth.MODEL}; inverted uniform blade λ = 1/10, M = −(λ/u)²; {what}",
+    return checks.Values(truth=f"{model}; inverted uniform blade λ = 1/10, M = −(λ/u)²; {what}",
                          points=points, confirm=lambda dps: {"q": quantity(f"u={us[0]}", dps)})
 
 
