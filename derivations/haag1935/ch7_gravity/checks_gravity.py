@@ -113,3 +113,30 @@ def C_values(sign: int) -> checks.Values:
     return checks.Values(truth=f"shot {'inverted ' if sign < 0 else ''}uniform blade (pendsym.blade, M = "
                                f"{'−' if sign < 0 else ''}(λ/u)²), wλ and ∫w'^n by Gauss–Legendre quadrature",
                          points=points, confirm=lambda dps: {"C": C_of(f"u={us[0]}", dps)}, kind="quadrature")
+
+
+SECTION = {"E": "2.1e11", "e": "0.0003", "theta": "1"}     # steel, 0.3 mm; θ = 1 radian
+
+
+def along_blade(what: str, kind: str, key: str, sign: int = 1, fraction: str = "0.6") -> checks.Order:
+    """Order in ε of a quantity of the blade at s = fraction·λ in the slow mode (θ = 1): ``kind`` "shape"
+    (ωy, y of the directly solved blade) or "stress" (E(e/2)φ', the bending stress of n°90)."""
+    def env_of(p, dps=30):
+        env = truth.state(key, sign, p, dps)
+        env.update({k: mp.mpf(x) for k, x in SECTION.items()})
+        env["s"] = mp.mpf(fraction) * env["lambda"]
+        return env
+
+    def value(p, dps):
+        env = env_of(p, dps)
+        sus = truth.direct(key, sign, 0, dps)
+        with mp.workdps(sus.wdps):
+            y, _, curvature = sus.deflection(env["s"], -(env["a"] + env["z'"]), 1)
+            if kind == "shape":
+                return env["u"] / env["lambda"] * y
+            return env["E"] * env["e"] / 2 * curvature
+
+    return checks.Order(param="varepsilon", values=EPS, truth=value, at=lambda expr, p: verify.value_at(expr, env_of(p)),
+                        expected=1, truth_desc=f"{truth.MODEL}; {what} at s = {fraction}λ in the slow mode (θ = 1, "
+                                                f"β = −(a + z')); blade {key}, {'direct' if sign > 0 else 'inverted'}",
+                        params=(("blade", key), ("E", SECTION["E"]), ("e", SECTION["e"])))

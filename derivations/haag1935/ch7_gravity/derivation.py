@@ -13,8 +13,8 @@ import sympy as sp
 
 from .. import ch1_model
 from ..common import rid
-from ..symbols import (E, G_2, K, K_prime, M_lambda, R, W_over_mg, a, a1, beta1, e, g, h, lam, m, mg, s, u, v0, vl, w0, wl,
-                       z, zp)
+from ..symbols import (E, G_2, K, M_lambda, R, W_over_mg, a, a1, beta1, e, g, h, lam, m, s, theta, u, v0, vl, w0,
+                      wl, z, zp)
 from .symbols import a_r, eps, eps_p, l_syn
 
 # (16): w0 = vλ + wλ; (17): β1 = λ + vλ − v0; (256): a = a1 + ελ with a1 = −wλ (41)
@@ -215,3 +215,15 @@ def dg_272(deps) -> sp.Expr:
 def dg_273(deps) -> sp.Expr:
     """(273): (272) as u → 0."""
     return sp.limit(derived_of(deps, 272, "dg"), u, 0)
+
+
+# ---------------------------------------------------------------- n°89–90: (277)–(280)
+def shape_278(deps) -> sp.Expr:
+    """(278): ωy with y = θ(w − w0) ((77) with Y = Kθ → 0, n°89), w of (157), ω = u/λ (156)."""
+    w_uniform = derived_of(deps, 157, "w")
+    return sp.simplify((u / lam * theta * (w_uniform - w_uniform.subs(s, 0))).rewrite(sp.cosh))
+
+
+def fatigue_280(deps) -> sp.Expr:
+    """(280): the bending stress E(e/2)φ' (78) with φ' = θw/M ((14), Y → 0), w of (157), M = λ²/u² (156)."""
+    return sp.simplify((E * e / 2 * theta * derived_of(deps, 157, "w") * u**2 / lam**2).rewrite(sp.cosh))

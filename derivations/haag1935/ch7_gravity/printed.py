@@ -4,7 +4,7 @@ from __future__ import annotations
 import sympy as sp
 
 from pendsym.result import Reading
-from ..symbols import E, G_2, M_lambda, a, alpha_blade, alpha_rod, beta_t, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
+from ..symbols import T, E, G_2, M_lambda, a, omega, s, theta, alpha_blade, alpha_rod, beta_t, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
 from .symbols import a_r, eps, eps_p, l_syn
 
 U1, U2 = 1 / sp.sinh(u), 1 / sp.tanh(u)
@@ -124,3 +124,16 @@ def eq272():
 
 def eq273():
     return beta_t + 3 * alpha_blade - alpha_rod
+
+
+READ_X = Reading("x (ω x, ch ω x)", "s: x = s to the first order (n°2); the memoir writes x in (77)")
+# n°51: T = mg/(eh); with (156), mg = EIu²/λ², I = e³h/12: T = Ee²u²/(12λ²); ω = u/λ
+FATIGUE_DEFS = ((T, E * e**2 * u**2 / (12 * lam**2)), (omega, u / lam))
+
+
+def eq278():
+    return theta / sp.sinh(u) * (sp.cosh(omega * s) - 1)
+
+
+def eq280():
+    return theta * sp.sqrt(3 * E * T) * sp.cosh(omega * s) / sp.sinh(u)

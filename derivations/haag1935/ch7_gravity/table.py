@@ -9,9 +9,9 @@ from pendsym.result import Spec
 
 from ..ch1_motion import truth as ch1_truth
 from ..common import READ_VW, rid, src
-from ..symbols import a1, wl
+from ..symbols import a1, lam, u, wl
 from . import derivation, printed
-from .checks_gravity import C_values, g_correction, inverse_eps, on, order, sensitivity, suppleness, temperature, u_path
+from .checks_gravity import C_values, along_blade, g_correction, inverse_eps, on, order, sensitivity, suppleness, temperature, u_path
 from .symbols import eps, eps_p, l_syn, a_r
 
 EPS_PRIME = ((eps_p, printed.eq258()),)
@@ -126,6 +126,13 @@ def specs() -> tuple[Spec, ...]:
              deps=(rid(272, "dg"),), printed=printed.eq273, readings=(printed.READ_BETA,),
              check=u_path(g_correction, "dg/g = −(2/G)dT/T along ε = u²/10", 2, lambda x: x**2 / 10,
                           lambda env: 1)),
+        Spec(rid(278, "shape"), "ωy = θ(ch ωx − 1)/sh u", src(89, "278"), r"\omega y", derivation.shape_278,
+             deps=(rid(157, "w"),), printed=printed.eq278, defs=((printed.omega, u / lam),), readings=(printed.READ_X,),
+             check=along_blade("ωy", "shape", "u=2")),
+        Spec(rid(280, "fatigue"), "T' = θ√(3ET) ch ωs/sh u", src(90, "280"), "T'", derivation.fatigue_280,
+             deps=(rid(157, "w"),), printed=printed.eq280, defs=printed.FATIGUE_DEFS,
+             check=along_blade("the bending stress E(e/2)φ'", "stress", "u=2"),
+             note="T = mg/(eh) (n°51) is written Ee²u²/(12λ²) by (156) to compare the forms."),
         Spec(rid(82, "S_gravity"), "S = −1 as ε → 0 (n°91)", src(91, None), "S", derivation.S_91,
              deps=(rid(82, "S"), rid(260, "K")), printed=printed.suppleness_91,
              check=both(lambda key: order(suppleness, "S = W'/W of the slow mode: W = strain energy, W + W' = "

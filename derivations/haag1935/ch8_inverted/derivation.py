@@ -9,8 +9,9 @@ from __future__ import annotations
 import sympy as sp
 
 from pendsym import blade
+from .. import ch1_model
 from ..common import rid
-from ..symbols import lam, s, u
+from ..symbols import a, beta1, lam, mg, s, u, vl, wl
 from ..ch7_gravity.derivation import C_of_phi2
 from ..ch7_gravity.symbols import eps
 
@@ -21,7 +22,7 @@ def derived_of(deps, eq: int, name: str) -> sp.Expr:
 
 def rotated(expr: sp.Expr) -> sp.Expr:
     """u → iu (n°101), written with circular functions."""
-    return sp.simplify(sp.expand_complex(sp.simplify(expr.subs(u, sp.I * u).rewrite(sp.tanh))))
+    return sp.simplify(sp.expand_complex(sp.expand(expr.rewrite(sp.cosh)).subs(u, sp.I * u)))
 
 
 def by_rotation(eq: int, name: str):
@@ -72,3 +73,32 @@ def C_317(_deps) -> sp.Expr:
     phi2 = sp.simplify(forms["phi2"].subs(M_neg, -lam**2 / u**2))
     wl = sp.simplify(forms["wl"].subs(M_neg, -lam**2 / u**2))
     return C_of_phi2(phi2, wl)
+
+
+# ---------------------------------------------------------------- n°100: (302)–(306)
+def potential_coefficients(_deps) -> sp.Tuple:
+    """Footnote of n°100: V/(mg) = ½[βY + θ(N + aθ)] (the work of the end loads and of the weight, n°23) with
+    β = β1Y + β2θ (21), β2 = −vλ (22) and N = Yvλ + θwλ ((2) at s = λ, (14)): the coefficients of Y² and θ²
+    (the Yθ term cancels).  For g < 0 the equilibrium is stable when both are negative: (304), (305)."""
+    Y, theta = sp.symbols("Y theta", real=True)
+    beta = Y * beta1 + theta * ch1_model.beta2_def()
+    N = Y * vl + theta * wl
+    V = sp.expand((beta * Y + theta * (N + a * theta)) / 2)
+    assert V.coeff(Y, 1).coeff(theta, 1) == 0
+    return sp.Tuple(2 * V.coeff(Y, 2), 2 * V.coeff(theta, 2))
+
+
+# ---------------------------------------------------------------- n°101: (311)
+def weight_311(deps) -> sp.Expr:
+    """(311): u < π/2 with u = λω, ω² = mg/(EI), I = e³h/12 (156), solved for mg."""
+    return sp.solve(sp.Eq(derived_of(deps, 156, "u"), sp.pi / 2), mg)[0]
+
+
+def shape_316(deps) -> sp.Expr:
+    """(316): (278) with ω → iω, u → iu (n°103): ωy → iωy, so the rotated right side over i."""
+    return sp.simplify(rotated(derived_of(deps, 278, "shape")) / sp.I)
+
+
+def fatigue_inverted(deps) -> sp.Expr:
+    """n°103 after (316): (280) with u → iu (M = λ²/u² → −λ²/u² and w → w(iu) together)."""
+    return rotated(derived_of(deps, 280, "fatigue"))

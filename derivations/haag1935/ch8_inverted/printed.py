@@ -4,7 +4,9 @@ from __future__ import annotations
 import sympy as sp
 
 from pendsym.result import Reading
-from ..symbols import alpha_blade, alpha_rod, beta_t, lam, u
+from ..symbols import T, E, omega, s, theta, a, alpha_blade, alpha_rod, beta_t, e, h, lam, u
+from ..symbols import beta1 as beta_1
+from ..symbols import wl as w_lambda
 from ..ch7_gravity.symbols import eps
 
 READ_313 = Reading("v_λ = −λ/(u tang u) (third)", "w_λ: the third formula of (313) is w_λ (OCR or misprint)",
@@ -54,3 +56,21 @@ def C():
 
 def dg():
     return beta_t + 2 * (2 * alpha_blade * (u + sp.sin(2 * u)) - alpha_rod * sp.sin(2 * u)) / (2 * u + sp.sin(2 * u))
+
+
+def existence():
+    """(304), (305): β1 < 0 and a + wλ < 0 (the quantities claimed negative)."""
+    return sp.Tuple(beta_1, a + w_lambda)
+
+
+def weight():
+    return sp.pi**2 * E * e**3 * h / (48 * lam**2)
+
+
+def shape():
+    return theta / sp.sin(u) * (1 - sp.cos(omega * s))
+
+
+def fatigue():
+    """n°103: (280) with ch ωs → cos ωs, sh u → sin u, T → |T|."""
+    return theta * sp.sqrt(3 * E * T) * sp.cos(omega * s) / sp.sin(u)

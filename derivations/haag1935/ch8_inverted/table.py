@@ -8,8 +8,10 @@ import mpmath as mp
 from pendsym import checks
 from pendsym.result import Spec
 
-from ..ch7_gravity.checks_gravity import C_values, g_correction, inverse_eps, order, sensitivity
+from ..ch7_gravity.checks_gravity import C_values, along_blade, g_correction, inverse_eps, order, sensitivity
 from ..common import READ_VW, rid, src
+from ..ch7_gravity.printed import FATIGUE_DEFS, READ_X
+from ..symbols import lam, omega, u
 from . import derivation, printed, truth
 
 A_FAR = "-1"          # a (m) at which the lower ends of the windows are found (they do not depend on a)
@@ -55,6 +57,11 @@ def values(quantity, what, **kw):
 
 def specs() -> tuple[Spec, ...]:
     return (
+        Spec(rid(304, "existence"), "both vibrations exist iff β1 < 0 (304) and a + wλ < 0 (305), g < 0", src(100, "304–305"),
+             r"(\beta_1, a + w_\lambda) < 0", derivation.potential_coefficients, printed=printed.existence,
+             readings=(READ_VW,), check=truth.ExistenceIff(),
+             note="Derived as the coefficients of Y², θ² in V/(mg) (footnote of n°100); (302), (303) are steps of "
+                  "the same reasoning and (306) is (305) with a > 0."),
         Spec(rid(307, "beta1"), "β1 = λ(1 − 2 tan(u/2)/u), inverted uniform blade", src(101, "307"), r"\beta_1",
              derivation.by_rotation(159, "beta1"), deps=(rid(159, "beta1"),), printed=printed.beta1,
              check=truth.on_u(truth.beta1, "β1 = 1/S00 of the direct stiffness", ("1/2", "1", "5/2", "46/5"))),
@@ -76,6 +83,9 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(310, "a1"), "a1 = λ/(u tan u), inverted uniform blade", src(101, "310"), "a_1", derivation.a1_310,
              deps=(rid(159, "wl"),), printed=printed.a1,
              check=truth.on_u(truth.critical, "a1 where det K = 0 (direct stiffness)")),
+        Spec(rid(311, "weight"), "mg < π²Ee³h/(48λ²)", src(101, "311"), "mg", derivation.weight_311,
+             deps=(rid(156, "u"),), printed=printed.weight, check=truth.largest_weight(),
+             note="The truth is the u where a1 of the direct stiffness vanishes (a > 0 possible below), by findroot."),
         Spec(rid(313, "v0"), "v0 = −vλ = (λ/u) tan(u/2)", src(103, "313"), "v_0", derivation.by_rotation(159, "v0"),
              deps=(rid(159, "v0"),), printed=printed.v0, readings=(READ_VW,),
              check=truth.on_u(truth.shot_end("v0"), "v0 of the shot blade", model=truth.SHOT)),
@@ -93,6 +103,14 @@ def specs() -> tuple[Spec, ...]:
              derivation.by_rotation(272, "dg"), deps=(rid(272, "dg"),), printed=printed.dg,
              check=order(g_correction, "dg/g = −(2/G)dT/T of the inverted blade (g < 0), both from the truth", 1,
                          "u=1", sign=-1)),
+        Spec(rid(316, "shape"), "ωy = θ(1 − cos ωx)/sin u", src(103, "316"), r"\omega y", derivation.shape_316,
+             deps=(rid(278, "shape"),), printed=printed.shape, defs=((omega, u / lam),), readings=(READ_X,),
+             check=along_blade("ωy", "shape", "u=1", sign=-1)),
+        Spec(rid(316, "fatigue"), "T' = θ√(3E|T|) cos ωs/sin u (n°103, after (316))", src(103, None), "T'",
+             derivation.fatigue_inverted, deps=(rid(280, "fatigue"),), printed=printed.fatigue, defs=FATIGUE_DEFS,
+             check=along_blade("the bending stress E(e/2)φ'", "stress", "u=1", sign=-1),
+             note="Printed as an instruction ('remplacer ch ωs par cos ωs [OCR: ch read cos] et sh u par sin u'); "
+                  "the transcription applies it to (280)."),
         Spec(rid(317, "C"), "C = (3/8)(4u − sin 4u)/(sin²u(2u + sin 2u)), inverted", src(103, "317"), "C",
              derivation.C_317, printed=printed.C, check=C_values(-1),
              note="Derived from dsolve with M < 0 (circular functions), not by u → iu."),
