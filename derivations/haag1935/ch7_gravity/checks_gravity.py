@@ -9,6 +9,9 @@ from . import truth
 
 EPS = checks.Geometric("1e-6", "1e-3")
 U_PATH = {"quick": ("1/10", "3/20", "1/5", "3/10"), "full": ("1/10", "1/8", "3/20", "1/5", "1/4", "3/10")}
+# where a remainder of relative size u/45 must dominate one of size u² (n°86): u ≪ 1/45
+U_SMALL = {"quick": ("1/10000", "1/5000", "1/2500", "1/1250"),
+           "full": ("1/10000", "1/5000", "1/2500", "1/1250", "1/625", "1/312")}
 
 
 def env_at(key: str, sign: int, eps, dps: int = 30) -> dict:
@@ -82,7 +85,7 @@ def blade_section(env) -> dict:
     return {"m": m, "e": e, "h": h, "E": 12 * m * abs(env["g"]) * env["lambda"] ** 2 / (env["u"] ** 2 * e**3 * h)}
 
 
-def u_path(quantity, what: str, expected: float, eps_of_u, scale, sign: int = 1) -> checks.Order:
+def u_path(quantity, what: str, expected: float, eps_of_u, scale, sign: int = 1, path=U_PATH) -> checks.Order:
     """Order in u along ε = eps_of_u(u) on the uniform blade (u → 0 results, n°85–86)."""
     def at(expr, p):
         env = truth.state(f"u={p}", sign, eps_of_u(sp.Rational(p)))
@@ -92,7 +95,7 @@ def u_path(quantity, what: str, expected: float, eps_of_u, scale, sign: int = 1)
         key, eps = f"u={p}", eps_of_u(sp.Rational(p))
         env = truth.state(key, sign, eps, dps)
         return quantity(env, key, sign, eps, dps) / scale(env)
-    return checks.Order(param="u", values=lambda level: [sp.Rational(x) for x in U_PATH[level]], truth=value,
+    return checks.Order(param="u", values=lambda level: [sp.Rational(x) for x in path[level]], truth=value,
                         at=at, expected=expected, truth_desc=f"{truth.MODEL}; {what}; uniform blade λ = 1/10",
                         params=(("R", truth.R_VALUE),))
 

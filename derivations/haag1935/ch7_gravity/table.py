@@ -11,7 +11,7 @@ from ..ch1_motion import truth as ch1_truth
 from ..common import READ_VW, rid, src
 from ..symbols import a1, lam, u, wl
 from . import derivation, printed
-from .checks_gravity import C_values, along_blade, g_correction, inverse_eps, on, order, sensitivity, suppleness, temperature, u_path
+from .checks_gravity import U_SMALL, C_values, along_blade, g_correction, inverse_eps, on, order, sensitivity, suppleness, temperature, u_path
 from .symbols import eps, eps_p, l_syn, a_r
 
 EPS_PRIME = ((eps_p, printed.eq258()),)
@@ -80,12 +80,13 @@ def specs() -> tuple[Spec, ...]:
                          with_energy=True)),
         Spec(rid(264, "G"), "G = 1/(εu²), u small", src(85, "264"), "G", derivation.G_264, deps=(rid(263, "G"),),
              printed=printed.eq264,
-             check=u_path(sensitivity, "εu²G along ε = u⁴/10", 4, lambda x: x**4 / 10,
+             note="(263) is 1/(εu²)(1 + u⁴/45 + …); G − G2/Q = −1 is relative εu², made u⁸/100 by the path.",
+             check=u_path(sensitivity, "εu²G along ε = u⁶/100", 4, lambda x: x**6 / 100,
                           lambda env: 1 / (env["varepsilon"] * env["u"] ** 2))),
         Spec(rid(264, "G_distance"), "G = −a/(a − a1), u small", src(85, "264"), "G", derivation.G_264_distance,
              deps=(rid(264, "G"), rid(159, "wl")), printed=printed.eq264_distance,
-             check=u_path(sensitivity, "εu²G along ε = u⁴/10, a = a1 + ελ of the truth", 2,
-                          lambda x: x**4 / 10, lambda env: 1 / (env["varepsilon"] * env["u"] ** 2)),
+             check=u_path(sensitivity, "εu²G along ε = u⁶/100, a = a1 + ελ of the truth", 2,
+                          lambda x: x**6 / 100, lambda env: 1 / (env["varepsilon"] * env["u"] ** 2)),
              note="Relative error u²/3 (a1 = −λ/u² − λ/3 + …): order 2 where 1/(εu²) has order 4."),
         Spec(rid(265, "n2"), "n² = εgλ/(R² + w0²)", src(86, "265"), "n^2", derivation.n2_265, deps=(rid(260, "K"),),
              printed=printed.eq265, readings=(READ_VW,),
@@ -95,21 +96,24 @@ def specs() -> tuple[Spec, ...]:
              check=both(lambda key: order(on("n'^2"), "n'² of the fast mode", 1, key))),
         Spec(rid(267, "n2"), "n² = gελ/(R² + a²), u small", src(86, "267"), "n^2", derivation.n2_267_distance,
              deps=(rid(265, "n2"), rid(159, "w0"), rid(159, "wl")), printed=printed.eq267,
-             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u", 1, lambda x: x, n2_scale)),
+             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u", 2, lambda x: x, n2_scale),
+             note="w0 + a = −λ/2 + ελ + O(λu²): w0² → a² has relative error u²; the ε-correction of (265) is εu²."),
         Spec(rid(267, "n2_l"), "n² = gελ/(al), l = (R² + a²)/a", src(86, "267"), "n^2",
              derivation.n2_267_synchronous, deps=(rid(267, "n2"),), printed=printed.eq267_l, defs=SYNCHRONOUS,
-             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u", 1, lambda x: x, n2_scale)),
+             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u", 2, lambda x: x, n2_scale)),
         Spec(rid(267, "n2_expanded"), "n² = g/l + gλ/(alu²) (+ gλ/(3al) derived)", src(86, "267"), "n^2",
              derivation.n2_267_expanded, deps=(rid(267, "n2_l"), rid(159, "wl")), printed=printed.eq267_expanded,
              defs=SYNCHRONOUS, readings=(printed.READ_GPRIME,),
-             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u", 1, lambda x: x, n2_scale),
-             note="a1 = −λ/u² − λ/3 + O(u²): the printed form drops −λ/3 against ελ, a relative error 1/(3ε) "
+             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u, u from 1e-4 to 3.2e-3", 1, lambda x: x, n2_scale,
+                          path=U_SMALL),
+             note="a1 = −λ/u² − λ/3 − λu²/45 + …: the derived form's remainder λu²/45 against ελ is u/45 (order 1 once "
+                  "u ≪ 1/45, where it dominates the u² of the first form). a1 = −λ/u² − λ/3 + O(u²): the printed form drops −λ/3 against ελ, a relative error 1/(3ε) "
                   "that does not vanish as u → 0 (the printed order is negative)."),
         Spec(rid(268, "period"), "π²/T² = g/l + Ee³h/(12malλ) (+ gλ/(3al) derived)", src(86, "268"),
              r"\pi^2/T^2", derivation.period_268, deps=(rid(267, "n2_expanded"),), printed=printed.eq268,
              defs=SYNCHRONOUS, readings=(printed.READ_GPRIME, printed.READ_E2),
-             check=u_path(on("n^2"), "π²/T² = n² over gεu⁴/λ along ε = u; m = 1 kg, e = 0.3 mm, h = 1 cm, E from "
-                          "EI = mgλ²/u² (156)", 1, lambda x: x, n2_scale)),
+             check=u_path(on("n^2"), "π²/T² = n² over gεu⁴/λ along ε = u, u from 1e-4 to 3.2e-3; m = 1 kg, "
+                          "e = 0.3 mm, h = 1 cm, E from EI = mgλ²/u² (156)", 1, lambda x: x, n2_scale, path=U_SMALL)),
         Spec(rid(270, "dT"), "dT/T per degree, ε → 0", src(87, "270"), r"\frac{dT}{T}", derivation.dT_270,
              deps=(rid(60, "dT"), rid(260, "K")), printed=printed.eq270,
              readings=(printed.READ_BETA, printed.READ_EPS, READ_VW),

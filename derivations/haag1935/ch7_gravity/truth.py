@@ -9,8 +9,9 @@ a = a1 + ελ (256) or a = a1 − ελ (312) is placed on the truth itself, neve
 
 The two modes are named by chapter VII's convention (n°83): the slow mode (n² → 0 with ε) has its node
 at z' (the root near w0), the fast one at z.  K = −n²z'/g and K' = −n'²z/g (34).  The sensitivity
-coefficient is G = 2 d log T/d log g = −d log n²/d log g at fixed EI, m, a, R, λ (61): g(1 + kH) and
-M/(1 + kH), k = ±1, ±2, by the 5-point stencil (error O(H⁴), H = 1e-10, 42 working digits).
+coefficient is G = 2 d log T/d log g = −d log n²/d log g at fixed EI, m, a, R, λ (61): g(1 + kh) and
+M/(1 + kh), k = ±1, ±2, by the 5-point stencil (error O((Gh)⁴), h = 1e-10·ε·min(1, u²) rounded down to a
+power of ten, 42 working digits or more).
 Haag's v, w (the end values w0, β1 a formula takes) come from the shot blade of :mod:`pendsym.blade`.
 """
 from __future__ import annotations
@@ -41,15 +42,22 @@ def base_blade(key: str, sign: int) -> blade.Blade:
     return blade.Blade(base.length, sign * base.M)
 
 
-def scaled_blade(key: str, sign: int, k: int) -> blade.Blade:
-    """The blade at g(1 + kH): M = EI/(mg) divided by 1 + kH."""
+def scaled_blade(key: str, sign: int, k: int, step: sp.Rational = H) -> blade.Blade:
+    """The blade at g(1 + k·step): M = EI/(mg) divided by 1 + k·step."""
     base = base_blade(key, sign)
-    return blade.Blade(base.length, base.M / (1 + k * H))
+    return blade.Blade(base.length, base.M / (1 + k * step))
 
 
-@functools.lru_cache(maxsize=64)
-def direct(key: str, sign: int, k: int = 0, dps: int = 30) -> suspension.Suspension:
-    return suspension.solve(scaled_blade(key, sign, k), dps)
+@functools.lru_cache(maxsize=128)
+def direct(key: str, sign: int, k: int = 0, dps: int = 30, step: sp.Rational = H) -> suspension.Suspension:
+    return suspension.solve(scaled_blade(key, sign, k, step), dps)
+
+
+def stencil_step(env: dict, eps) -> sp.Rational:
+    """H times the power of ten below ε·min(1, u²): G ~ 1/(εu²) near a1, so that G·step stays ≤ H and the
+    stencil's O((G·step)⁴) error stays negligible."""
+    size = mp.mpf(eps) * min(1, env.get("u", 1) ** 2)
+    return H * sp.Rational(10) ** int(mp.floor(mp.log10(size)))
 
 
 @functools.lru_cache(maxsize=32)
@@ -102,15 +110,17 @@ def state(key: str, sign: int, eps, dps: int = 30) -> dict:
 
 
 def sensitivity(key: str, sign: int, eps, dps: int = 30) -> mp.mpf:
-    """G = −d log n²/d log g of the slow mode, at fixed EI, m, a, R, λ (61): stencil over g(1 + kH)."""
+    """G = −d log n²/d log g of the slow mode, at fixed EI, m, a, R, λ (61): stencil over g(1 + kh),
+    h = :func:`stencil_step`."""
     env = numbers(key, sign, dps)
     sus = direct(key, sign, 0, dps)
     with mp.workdps(sus.wdps):
         a = env["a_1"] + sign * mp.mpf(eps) * env["lambda"]
-        h = suspension.number(H)
+        step = stencil_step(env, eps)
+        h = suspension.number(step)
 
         def log_n2(k):
-            return mp.log(eigenmodes(direct(key, sign, k, dps), a, env["R"], env["g"] * (1 + k * h))[0][0])
+            return mp.log(eigenmodes(direct(key, sign, k, dps, step), a, env["R"], env["g"] * (1 + k * h))[0][0])
         return -(8 * (log_n2(1) - log_n2(-1)) - (log_n2(2) - log_n2(-2))) / (12 * h)
 
 
