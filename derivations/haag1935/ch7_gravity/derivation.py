@@ -175,9 +175,15 @@ def S_91(deps) -> sp.Expr:
 
 # ---------------------------------------------------------------- n°93: (285)
 def C_of_phi2(phi2: sp.Expr, wl_value: sp.Expr) -> sp.Expr:
-    """(284): C = (wλ − F4)/(wλ − F2) at K = 0, F_n = ∫_0^λ φ2^n ds (79), G2 = wλ − F2 by (81)."""
-    F = {n: sp.integrate(sp.expand(phi2**n), (s, 0, lam)) for n in (2, 4)}
-    return sp.simplify((wl_value - F[4]) / (wl_value - F[2]))
+    """(284): C = (wλ − F4)/(wλ − F2) at K = 0, F_n = ∫_0^λ φ2^n ds (79), G2 = wλ − F2 by (81).
+
+    φ2 and wλ in exponentials of u (158), (159): with p = e^{us/λ} (ds = λ dp/(up)) and q = e^u the integrals
+    are of rational functions of p; the result is rational in e^u and u."""
+    p, q = sp.symbols("p q", positive=True)
+    f = sp.expand(sp.expand_power_exp(sp.powsimp(phi2.subs(s, lam * sp.log(p) / u), force=True))).subs(sp.exp(u), q)
+    F = {n: (lam / u * sp.integrate(sp.cancel(f**n / p), (p, 1, q))).subs(sp.log(q), u) for n in (2, 4)}
+    w_q = sp.cancel(sp.expand(wl_value.rewrite(sp.exp)).subs(sp.exp(u), q))
+    return sp.factor(sp.cancel((w_q - F[4]) / (w_q - F[2]))).subs(q, sp.exp(u))
 
 
 def C_285(deps) -> sp.Expr:

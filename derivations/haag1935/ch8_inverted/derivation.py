@@ -12,7 +12,6 @@ from pendsym import blade
 from .. import ch1_model
 from ..common import rid
 from ..symbols import a, beta1, lam, mg, s, u, vl, wl
-from ..ch7_gravity.derivation import C_of_phi2
 from ..ch7_gravity.symbols import eps
 
 
@@ -70,9 +69,12 @@ def C_317(_deps) -> sp.Expr:
     """(317): C of (284) with φ2, wλ of (9)–(10) for M = −λ²/u² (dsolve, trigonometric forms)."""
     M_neg = sp.Symbol("M", negative=True)
     forms = blade.closed_forms(M_neg, lam, s)
-    phi2 = sp.simplify(forms["phi2"].subs(M_neg, -lam**2 / u**2))
-    wl = sp.simplify(forms["wl"].subs(M_neg, -lam**2 / u**2))
-    return C_of_phi2(phi2, wl)
+    phi2 = sp.simplify(forms["phi2"].subs(M_neg, -lam**2 / u**2))       # sin(us/λ)/sin u
+    w_lambda = sp.simplify(forms["wl"].subs(M_neg, -lam**2 / u**2))
+    x = sp.Symbol("x", positive=True)                                     # x = us/λ
+    f = sp.simplify(phi2.subs(s, lam * x / u))
+    F = {n: lam / u * sp.integrate(sp.expand(f**n), (x, 0, u)) for n in (2, 4)}
+    return sp.simplify((w_lambda - F[4]) / (w_lambda - F[2]))
 
 
 # ---------------------------------------------------------------- n°100: (302)–(306)
