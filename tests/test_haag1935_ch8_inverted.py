@@ -28,3 +28,18 @@ def test_lower_end_of_the_first_window_is_twice_the_root_of_tan_x_equal_x():
         assert abs(end - 2 * mp.findroot(lambda x: mp.tan(x) - x, 4.49)) < mp.mpf("1e-20")
         assert abs((end / (mp.pi / 2)) ** 2 - mp.mpf("32.7")) > mp.mpf("0.01")   # the printed 32.7 is rounded
     assert abs(derivation.x1_of_308() - sp.Float("4.4934094579090641753", 20)) < 1e-18
+
+
+def test_existence_iff_accepts_the_potential_coefficients_and_refuses_a_wrong_sign():
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import a, beta1, wl
+    right = SimpleNamespace(derived_value=sp.Tuple(beta1, a + wl))
+    wrong = SimpleNamespace(derived_value=sp.Tuple(-beta1, a + wl))
+    assert truth.ExistenceIff()(right, "quick").passed
+    assert not truth.ExistenceIff()(wrong, "quick").passed
+
+
+def test_potential_coefficients_are_beta1_and_a_plus_w_lambda():
+    from derivations.haag1935.symbols import a, beta1, wl
+    assert derivation.potential_coefficients(None) == sp.Tuple(beta1, a + wl)

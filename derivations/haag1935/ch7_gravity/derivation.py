@@ -210,12 +210,15 @@ def dg_271(deps) -> sp.Expr:
 
 
 def dg_272(deps) -> sp.Expr:
-    """(272): (271) for the uniform blade: G2 = λΓ2(k = 0) ((163), (166)), wλ of (159), M_λ = λ²/u² (156)."""
+    """(272): (271) for the uniform blade: G2 = λΓ2(k = 0) ((163), (166)), wλ of (159), M_λ = λ²/u² (156);
+    th u = 2t/(1 + t²) with t = th(u/2), so that the form is rational in t and u (as chapter III writes)."""
     Gamma2 = derived_of(deps, 166, "Gamma2")
     k_symbol, = [x for x in Gamma2.free_symbols if x.name == "k"]
     expr = derived_of(deps, 271, "dg").subs({G_2: lam * Gamma2.subs(k_symbol, 0), wl: derived_of(deps, 159, "wl"),
                                              M_lambda: lam**2 / u**2})
-    return sp.simplify(expr)
+    half = sp.Symbol("t", positive=True)
+    expr = expr.subs(sp.tanh(u), 2 * sp.tanh(u / 2) / (1 + sp.tanh(u / 2) ** 2)).subs(sp.tanh(u / 2), half)
+    return sp.cancel(sp.together(expr)).subs(half, sp.tanh(u / 2))
 
 
 def dg_273(deps) -> sp.Expr:

@@ -4,6 +4,7 @@ from __future__ import annotations
 import sympy as sp
 
 from pendsym.result import Reading
+from ..symbols import U1 as U1s, U2 as U2s
 from ..symbols import T, E, G_2, M_lambda, a, omega, s, theta, alpha_blade, alpha_rod, beta_t, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
 from .symbols import a_r, eps, eps_p, l_syn
 
@@ -119,7 +120,8 @@ def eq271():
 
 
 def eq272():
-    return beta_t + 2 * (alpha_blade * (u * U1**2 + 2 * U2) - alpha_rod * U2) / (u * U1**2 + U2)
+    """With Haag's symbols U1, U2 (compared under chapter III's definitions (160), rational in th(u/2))."""
+    return beta_t + 2 * (alpha_blade * (u * U1s**2 + 2 * U2s) - alpha_rod * U2s) / (u * U1s**2 + U2s)
 
 
 def eq273():

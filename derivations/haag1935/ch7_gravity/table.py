@@ -9,7 +9,7 @@ from pendsym.result import Spec
 
 from ..ch1_motion import truth as ch1_truth
 from ..common import READ_VW, rid, src
-from ..symbols import a1, lam, u, wl
+from ..symbols import DEFS, a1, lam, u, wl
 from . import derivation, printed
 from .checks_gravity import U_SMALL, C_values, along_blade, g_correction, inverse_eps, on, order, sensitivity, suppleness, temperature, u_path
 from .symbols import eps, eps_p, l_syn, a_r
@@ -124,7 +124,7 @@ def specs() -> tuple[Spec, ...]:
              check=order(g_correction, "dg/g = −(2/G)dT/T, both from the truth", 1, "u=2", with_energy=True)),
         Spec(rid(272, "dg"), "dg/g correction, uniform blade", src(87, "272"), r"\frac{dg}{g}", derivation.dg_272,
              deps=(rid(271, "dg"), rid(166, "Gamma2"), rid(159, "wl")), printed=printed.eq272,
-             readings=(printed.READ_BETA,),
+             readings=(printed.READ_BETA,), defs=DEFS,
              check=order(g_correction, "dg/g = −(2/G)dT/T, both from the truth", 1, "u=2")),
         Spec(rid(273, "dg"), "dg/g = β + 3α − α', u small", src(87, "273"), r"\frac{dg}{g}", derivation.dg_273,
              deps=(rid(272, "dg"),), printed=printed.eq273, readings=(printed.READ_BETA,),
