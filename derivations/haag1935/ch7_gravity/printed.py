@@ -5,7 +5,8 @@ import sympy as sp
 
 from pendsym.result import Reading
 from ..symbols import U1 as U1s, U2 as U2s
-from ..symbols import T, E, G_2, M_lambda, a, omega, s, theta, alpha_blade, alpha_rod, beta_t, R, W_over_mg, a1, beta1, e, g, h, lam, m, u, v0, vl, w0, wl, z, zp
+from ..symbols import (E, G_2, M_lambda, R, T, W_over_mg, a, a1, alpha_blade, alpha_rod, beta1, beta_t, e, g, h, lam, m,
+                      omega, s, theta, u, v0, vl, w0, wl, z, zp)
 from .symbols import a_r, eps, eps_p, l_syn
 
 U1, U2 = 1 / sp.sinh(u), 1 / sp.tanh(u)

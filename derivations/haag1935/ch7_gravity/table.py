@@ -11,7 +11,8 @@ from ..ch1_motion import truth as ch1_truth
 from ..common import READ_VW, rid, src
 from ..symbols import DEFS, a1, lam, u, wl
 from . import derivation, printed
-from .checks_gravity import U_SMALL, C_values, along_blade, g_correction, inverse_eps, on, order, sensitivity, suppleness, temperature, u_path
+from .checks_gravity import (U_SMALL, C_values, along_blade, g_correction, inverse_eps, on, order, sensitivity,
+                             suppleness, temperature, u_path)
 from .symbols import eps, eps_p, l_syn, a_r
 
 EPS_PRIME = ((eps_p, printed.eq258()),)
@@ -106,9 +107,9 @@ def specs() -> tuple[Spec, ...]:
              defs=SYNCHRONOUS, readings=(printed.READ_GPRIME,),
              check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u, u from 1e-4 to 3.2e-3", 1, lambda x: x, n2_scale,
                           path=U_SMALL),
-             note="a1 = −λ/u² − λ/3 − λu²/45 + …: the derived form's remainder λu²/45 against ελ is u/45 (order 1 once "
-                  "u ≪ 1/45, where it dominates the u² of the first form). a1 = −λ/u² − λ/3 + O(u²): the printed form drops −λ/3 against ελ, a relative error 1/(3ε) "
-                  "that does not vanish as u → 0 (the printed order is negative)."),
+             note="a1 = −wλ = −λ/u² − λ/3 − λu²/45 + … (159): the printed form keeps only −λ/u² and so drops −λ/3 "
+                  "against ελ, a relative error 1/(3ε) that does not vanish as u → 0 (the printed order is negative). "
+                  "The derived form keeps −λ/3; its remainder λu²/45 against ελ is u/45, of order 1 once u ≪ 1/45."),
         Spec(rid(268, "period"), "π²/T² = g/l + Ee³h/(12malλ) (+ gλ/(3al) derived)", src(86, "268"),
              r"\pi^2/T^2", derivation.period_268, deps=(rid(267, "n2_expanded"),), printed=printed.eq268,
              defs=SYNCHRONOUS, readings=(printed.READ_GPRIME, printed.READ_E2),
