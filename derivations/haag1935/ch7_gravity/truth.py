@@ -125,8 +125,8 @@ def sensitivity(key: str, sign: int, eps, dps: int = 30) -> mp.mpf:
 
 
 # ---------------------------------------------------------------- temperature (n°87, n°103)
-# per degree: dλ/λ = α, da/a = dR/R = α', dE/E = β, dI/I = 4α (n°14); a steel blade and a brass-like rod
-ALPHA, ALPHA_ROD, BETA_T = sp.Rational(11, 10**6), sp.Rational(9, 10**6), sp.Rational(-24, 10**5)
+# per degree: dλ/λ = α, da/a = dR/R = α', dE/E = β, dI/I = 4α (n°14); a steel blade and a brass rod
+ALPHA, ALPHA_ROD, BETA_T = sp.Rational(11, 10**6), sp.Rational(19, 10**6), sp.Rational(-24, 10**5)
 TEMPERATURE = {"alpha": ALPHA, "alpha'": ALPHA_ROD, "beta_t": BETA_T}
 H_DEGREE = sp.Rational(1, 10**6)     # step of the temperature stencil, in degrees
 
