@@ -85,7 +85,8 @@ def blade_section(env) -> dict:
     return {"m": m, "e": e, "h": h, "E": 12 * m * abs(env["g"]) * env["lambda"] ** 2 / (env["u"] ** 2 * e**3 * h)}
 
 
-def u_path(quantity, what: str, expected: float, eps_of_u, scale, sign: int = 1, path=U_PATH) -> checks.Order:
+def u_path(quantity, what: str, expected: float, eps_of_u, scale, sign: int = 1, path=U_PATH,
+           dps: int = 30) -> checks.Order:
     """Order in u along ε = eps_of_u(u) on the uniform blade (u → 0 results, n°85–86)."""
     def at(expr, p):
         env = truth.state(f"u={p}", sign, eps_of_u(sp.Rational(p)))
@@ -97,7 +98,7 @@ def u_path(quantity, what: str, expected: float, eps_of_u, scale, sign: int = 1,
         return quantity(env, key, sign, eps, dps) / scale(env)
     return checks.Order(param="u", values=lambda level: [sp.Rational(x) for x in path[level]], truth=value,
                         at=at, expected=expected, truth_desc=f"{truth.MODEL}; {what}; uniform blade λ = 1/10",
-                        params=(("R", truth.R_VALUE),))
+                        params=(("R", truth.R_VALUE),), dps=dps, confirm_dps=dps + 15)
 
 
 def C_values(sign: int) -> checks.Values:

@@ -105,8 +105,8 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(267, "n2_expanded"), "n² = g/l + gλ/(alu²) (+ gλ/(3al) derived)", src(86, "267"), "n^2",
              derivation.n2_267_expanded, deps=(rid(267, "n2_l"), rid(159, "wl")), printed=printed.eq267_expanded,
              defs=SYNCHRONOUS, readings=(printed.READ_GPRIME,),
-             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u, u from 1e-4 to 3.2e-3", 1, lambda x: x, n2_scale,
-                          path=U_SMALL),
+             check=u_path(on("n^2"), "n²/(gεu⁴/λ) along ε = u, u from 1e-4 to 3.2e-3 (n'²/n² ~ 1e28: 60 digits)", 1, lambda x: x, n2_scale,
+                          path=U_SMALL, dps=60),
              note="a1 = −wλ = −λ/u² − λ/3 − λu²/45 + … (159): the printed form keeps only −λ/u² and so drops −λ/3 "
                   "against ελ, a relative error 1/(3ε) that does not vanish as u → 0 (the printed order is negative). "
                   "The derived form keeps −λ/3; its remainder λu²/45 against ελ is u/45, of order 1 once u ≪ 1/45."),
@@ -114,7 +114,8 @@ def specs() -> tuple[Spec, ...]:
              r"\pi^2/T^2", derivation.period_268, deps=(rid(267, "n2_expanded"),), printed=printed.eq268,
              defs=SYNCHRONOUS, readings=(printed.READ_GPRIME, printed.READ_E2),
              check=u_path(on("n^2"), "π²/T² = n² over gεu⁴/λ along ε = u, u from 1e-4 to 3.2e-3; m = 1 kg, "
-                          "e = 0.3 mm, h = 1 cm, E from EI = mgλ²/u² (156)", 1, lambda x: x, n2_scale, path=U_SMALL)),
+                          "e = 0.3 mm, h = 1 cm, E from EI = mgλ²/u² (156)", 1, lambda x: x, n2_scale, path=U_SMALL,
+                          dps=60)),
         Spec(rid(270, "dT"), "dT/T per degree, ε → 0", src(87, "270"), r"\frac{dT}{T}", derivation.dT_270,
              deps=(rid(60, "dT"), rid(260, "K")), printed=printed.eq270,
              readings=(printed.READ_BETA, printed.READ_EPS, READ_VW),
