@@ -6,7 +6,7 @@ the report's headings group the Results of a chapter by equation number.
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
-from . import ch4_thread, ch5_point, ch6_short_blade, ch9_holes
+from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
 
 
 def _of(package) -> tuple[Section, ...]:
@@ -29,8 +29,10 @@ CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
 CHAPTER_5 = (Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(211)"),)
 CHAPTER_6 = _of(ch6_short_blade)
+CHAPTER_7 = (Section.of(ch7_gravity, "Chapter VII. The gravity pendulum with direct suspension (255)–(285)"),)
+CHAPTER_8 = (Section.of(ch8_inverted, "Chapter VIII. The inverted blade (302)–(317)"),)
 CHAPTER_9 = _of(ch9_holes)
-SECTIONS = CHAPTER_1 + CHAPTER_2 + CHAPTER_3 + CHAPTER_4 + CHAPTER_5 + CHAPTER_6 + CHAPTER_9
+SECTIONS = CHAPTER_1 + CHAPTER_2 + CHAPTER_3 + CHAPTER_4 + CHAPTER_5 + CHAPTER_6 + CHAPTER_7 + CHAPTER_8 + CHAPTER_9
 
 
 def _eqs(lo: int, hi: int, chapter: tuple[Section, ...]):
@@ -57,6 +59,8 @@ HEADINGS = (
     ("Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)", _eqs(212, 223, CHAPTER_6)),
     ("Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion (224)–(240)",
      _eqs(224, 240, CHAPTER_6)),
+    ("Chapter VII. The gravity pendulum with direct suspension (255)–(285), n°82–93", _eqs(0, 999, CHAPTER_7)),
+    ("Chapter VIII. The inverted blade (302)–(317), n°100–103", _eqs(0, 999, CHAPTER_8)),
     ("Chapter IX. The rectangular hole (321)–(333)", _eqs(321, 333, CHAPTER_9)),
     ("Chapter IX. The rhombus hole (334)–(346)", _eqs(334, 346, CHAPTER_9)),
 )
@@ -67,7 +71,8 @@ MEMOIR = Memoir(
            "for any M(s), eqs. (1)–(87); chapter II, n°26–30, the second approximation and the isochronism error, "
            "eqs. (88)–(114); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
            "the thread, the point pendulum and beats, eqs. (184)–(211); chapter VI, the short blade, "
-           "eqs. (212)–(240); chapter IX, blades with a hole, eqs. (321)–(346)"),
+           "eqs. (212)–(240); chapters VII–VIII, the gravity pendulum direct and inverted, eqs. (255)–(317); "
+           "chapter IX, blades with a hole, eqs. (321)–(346)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), HEADINGS),
     # (111) and (112) are checked on the same nonlinear periods

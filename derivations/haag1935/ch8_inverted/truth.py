@@ -1,0 +1,143 @@
+"""Haag 1935, chapter VIII: the truth of the inverted blade (M < 0, g < 0), solved directly.
+
+The stiffness of the directly solved blade (:mod:`pendsym.suspension`, |M| v'' + v = 0 in effect) gives
+β1 = 1/S00, a1 where det K = 0, and the eigenproblem of the pendulum; the stability windows' ends are the u
+where an eigenvalue n² of K q = n² 𝕄 q crosses zero (the slow one, at a = a1(u)) or passes through
+infinity (β1 = 0: 1/n'² crosses zero), found by mpmath findroot on the truth.  The shot blade (pendsym.blade
+with M < 0) gives v0, w0, wλ.  Never u → iu.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath as mp
+import sympy as sp
+
+from pendsym import blade, checks, suspension, verify
+from pendsym.result import Evidence
+from ..ch7_gravity import truth
+
+SIGN = -1
+
+
+def key(x) -> str:
+    return f"u={sp.nsimplify(x)}"
+
+
+def direct_at(u_value, dps: int) -> suspension.Suspension:
+    """The inverted uniform blade at a real u (not cached: findroot visits many)."""
+    length = truth.LAMBDA
+    M = -(length / sp.Float(str(u_value), dps + 15)) ** 2
+    return suspension.solve(blade.Blade(length, M), dps)
+
+
+def eigenvalues(u_value, a, dps: int) -> list:
+    sus = direct_at(u_value, dps)
+    return [n2 for n2, _ in truth.eigenmodes(sus, a, truth.R_VALUE, -mp.mpf(truth.G_VALUE))]
+
+
+def lower_end(guess: str, dps: int = 30, a="-1") -> mp.mpf:
+    """The u where 1/n'² (the eigenvalue of largest modulus) crosses zero near ``guess`` (β1 = 0).
+
+    There the blade clamped at both ends buckles (tan(u/2) = u/2 is its antisymmetric buckling condition):
+    the direct solve is singular at the root itself, where 1/n'² = 0."""
+    with mp.workdps(dps + 10):
+        def f(x):
+            try:
+                values = eigenvalues(x, mp.mpf(a), dps)
+            except blade.SingularBlade:     # at the end itself the clamped blade buckles: 1/n'² = 0
+                return mp.mpf(0)
+            return 1 / max(values, key=abs)
+        return mp.findroot(f, (mp.mpf(guess) - mp.mpf("0.01"), mp.mpf(guess) + mp.mpf("0.01")), solver="secant")
+
+
+def upper_end(guess: str, a, dps: int = 30) -> mp.mpf:
+    """The u where the slow n² crosses zero near ``guess``, at a fixed a (det K = 0: a = a1(u))."""
+    with mp.workdps(dps + 10):
+        def f(x):
+            return min(eigenvalues(x, a, dps), key=abs)
+        return mp.findroot(f, (mp.mpf(guess) - mp.mpf("0.001"), mp.mpf(guess)), solver="secant")
+
+
+def beta1(k: str, dps: int = 30) -> mp.mpf:
+    sus = truth.direct(k, SIGN, 0, dps)
+    with mp.workdps(sus.wdps):
+        return 1 / sus.stiffness[0, 0]
+
+
+def critical(k: str, dps: int = 30) -> mp.mpf:
+    return truth.critical_distance(truth.direct(k, SIGN, 0, dps))
+
+
+SHOT = "pendsym.blade: v, w of (9)–(10) shot (mpmath odefun) for M = −(λ/u)² < 0, 30 digits, confirmed at 45"
+
+
+def on_u(quantity, what: str, us=("1/2", "1", "5/2"), model: str = truth.MODEL) -> checks.Values:
+    def points(level, dps):
+        for x in us:
+            yield checks.Point(f"u={x}", {"u": suspension.number(sp.Rational(x)), "lambda": mp.mpf("0.1")},
+                               quantity(f"u={x}", dps))
+    return checks.Values(truth=f"{model}; inverted uniform blade λ = 1/10, M = −(λ/u)²; {what}",
+                         points=points, confirm=lambda dps: {"q": quantity(f"u={us[0]}", dps)})
+
+
+def shot_end(name: str):
+    return lambda k, dps: getattr(truth.shot(k, SIGN, dps), name)
+
+
+# ---------------------------------------------------------------- n°100: existence of the vibrations
+EXISTENCE_BLADES = ("u=1", "u=5/2", "u=6", "u=46/5", "tapered")     # M < 0 for each (sign −1)
+EXISTENCE_OFFSETS = ("-0.05", "0.05", "-1", "0.3")                  # a − a1 (m), and below/above
+
+
+@dataclass(frozen=True)
+class ExistenceIff:
+    """n°100: both n² of the eigenproblem (g < 0) are positive if and only if the derived (β1, a + wλ) are
+    both negative, on inverted blades (uniform u = 1, 5/2, 6, 9.2, and the tapered profile with M < 0) at
+    a = a1 ± 5 cm, a1 − 1 m, a1 + 30 cm.  Custom: an equivalence of signs at points of the model."""
+
+    def __call__(self, result, level: str) -> Evidence:
+        ok, notes, kinds = True, [], set()
+        for k in EXISTENCE_BLADES:
+            env0 = truth.numbers(k, SIGN)
+            sus = truth.direct(k, SIGN, 0)
+            for offset in EXISTENCE_OFFSETS:
+                with mp.workdps(sus.wdps):
+                    a = env0["a_1"] + mp.mpf(offset)
+                    n2 = [x for x, _ in truth.eigenmodes(sus, a, env0["R"], env0["g"])]
+                    exists = min(n2) > 0
+                    values = [verify.value_at(part, dict(env0, a=a)) for part in result.derived_value]
+                    claimed = all(x < 0 for x in values)
+                ok &= exists == claimed
+                kinds.add(exists)
+                notes.append(f"{k}, a − a1 = {offset}: n² = {mp.nstr(min(n2), 4)}, {mp.nstr(max(n2), 4)}; "
+                             f"β1 = {mp.nstr(values[0], 4)}, a + wλ = {mp.nstr(values[1], 4)}")
+        ok &= kinds == {True, False}
+        return Evidence(kind="inequality", passed=bool(ok),
+                        truth=f"{truth.MODEL}: the signs of both n² against those of β1 and a + wλ (g < 0)",
+                        note="; ".join(notes))
+
+
+# ---------------------------------------------------------------- n°101: the largest weight (311)
+def quarter_turn(dps: int = 30) -> mp.mpf:
+    """The u where a1 of the direct stiffness crosses zero (a > 0 possible below it), by findroot."""
+    with mp.workdps(dps + 10):
+        return mp.findroot(lambda x: truth.critical_distance(direct_at(x, dps)), (mp.mpf("1.5"), mp.mpf("1.6")),
+                           solver="secant")
+
+
+BLADE_SECTION = {"E": "2.1e11", "e": "0.0003", "h": "0.01", "lambda": "0.1"}   # steel, 0.3 mm × 1 cm × 10 cm
+
+
+def largest_weight(dps: int = 30) -> checks.Values:
+    """(311): the weight mg = EIu²/λ² (156) at the u where a1 = 0, I = e³h/12."""
+    def weight(dps_):
+        with mp.workdps(dps_ + 10):
+            env = {k: mp.mpf(x) for k, x in BLADE_SECTION.items()}
+            return env["E"] * env["e"] ** 3 * env["h"] / 12 * quarter_turn(dps_) ** 2 / env["lambda"] ** 2
+
+    def points(level, dps_):
+        yield checks.Point("steel 0.3 mm × 1 cm × 10 cm", {k: mp.mpf(x) for k, x in BLADE_SECTION.items()},
+                           weight(dps_))
+    return checks.Values(truth=f"{truth.MODEL}; the u where a1 of the inverted uniform blade vanishes (findroot), "
+                               "mg = EIu²/λ² (156)", points=points, confirm=lambda dps_: {"mg": weight(dps_)})

@@ -1,0 +1,45 @@
+"""Haag 1935, chapter VIII: the inverted blade's truth (M < 0, g < 0, solved directly) and its windows."""
+import mpmath as mp
+import sympy as sp
+
+from derivations.haag1935.ch8_inverted import derivation, truth
+
+
+def test_inverted_critical_distance_and_beta1_from_the_direct_stiffness():
+    with mp.workdps(30):
+        u = mp.mpf(1)
+        assert abs(truth.critical("u=1") - mp.mpf("0.1") / (u * mp.tan(u))) < mp.mpf("1e-25")
+        assert abs(truth.beta1("u=1") - mp.mpf("0.1") * (1 - 2 * mp.tan(u / 2) / u)) < mp.mpf("1e-25")
+        # (308): β1 < 0 for 0 < u < π, β1 > 0 between π and 2x1
+        assert truth.beta1("u=5/2") < 0 and truth.beta1("u=1") < 0 < truth.beta1("u=6")
+
+
+def test_stable_inside_a_window_and_unstable_outside():
+    with mp.workdps(30):
+        inside = truth.eigenvalues(mp.mpf("9.2"), mp.mpf(-1), 30)      # 2x1 < 9.2 < 3π
+        outside = truth.eigenvalues(mp.mpf("6"), mp.mpf(-1), 30)       # π < 6 < 2x1
+        assert min(inside) > 0
+        assert min(outside) < 0
+
+
+def test_lower_end_of_the_first_window_is_twice_the_root_of_tan_x_equal_x():
+    with mp.workdps(30):
+        end = truth.lower_end("8.99", 30)
+        assert abs(end - 2 * mp.findroot(lambda x: mp.tan(x) - x, 4.49)) < mp.mpf("1e-20")
+        assert abs((end / (mp.pi / 2)) ** 2 - mp.mpf("32.7")) > mp.mpf("0.01")   # the printed 32.7 is rounded
+    assert abs(derivation.x1_of_308() - sp.Float("4.4934094579090641753", 20)) < 1e-18
+
+
+def test_existence_iff_accepts_the_potential_coefficients_and_refuses_a_wrong_sign():
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import a, beta1, wl
+    right = SimpleNamespace(derived_value=sp.Tuple(beta1, a + wl))
+    wrong = SimpleNamespace(derived_value=sp.Tuple(-beta1, a + wl))
+    assert truth.ExistenceIff()(right, "quick").passed
+    assert not truth.ExistenceIff()(wrong, "quick").passed
+
+
+def test_potential_coefficients_are_beta1_and_a_plus_w_lambda():
+    from derivations.haag1935.symbols import a, beta1, wl
+    assert derivation.potential_coefficients(None) == sp.Tuple(beta1, a + wl)
