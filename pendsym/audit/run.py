@@ -7,8 +7,9 @@ For each kernel listed in ``generated/results.json``:
    evaluated on at least :data:`POINTS` points: the hard points and random points of
    :mod:`.points`, then an adversarial local search (:func:`.points.climb`) from the worst
    points found, which climbs the scaled error ulp / max(1, κ);
-2. the reference is the Result's *derived* form in mpmath at :data:`REF_DPS` digits, and
-   every point whose error exceeds half the bound is confirmed at :data:`CONFIRM_DPS` digits;
+2. the reference is the Result's *derived* form in mpmath at 50 digits, 8 more per decade the
+   smallest argument lies below 1 (:func:`pendsym.emit.kernels.limits.ref_dps`), and
+   every point whose error exceeds half the bound is confirmed with :data:`CONFIRM_DIGITS` more;
    κ is the condition number of :func:`pendsym.emit.kernels.measure.reference` (computed where
    the error in ulp could exceed the scaled error already found: scaled ≤ ulp);
 3. the C time per call is measured on random points of the domain (min and median of 5 runs).
@@ -23,13 +24,15 @@ import ctypes
 import importlib.util
 import json
 import math
-import os
+import random
+import re
 import shutil
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+from errno import EDOM
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Sequence
@@ -39,15 +42,17 @@ import sympy as sp
 
 from .. import pipeline, schedule, stages
 from ..emit import kernels as kn
+from ..emit.kernels.limits import ref_dps
 from ..emit.kernels.measure import reference
 from ..result import KernelArg
 from . import points as pt
 
+LIMIT_AT = 1e-80         # the reference at 0 of an argument accepted down to 0: the form here
 POINTS = 20_000          # points per kernel, the search included
 CLIMB_STARTS = 8         # the worst points the search starts from
 CLIMB_BUDGET = 1_200     # evaluations of the search, over its starts
-REF_DPS = 50
-CONFIRM_DPS = 110
+CONFIRM_DIGITS = 60      # more digits for a point whose error exceeds half the bound
+TINY_POINTS = 400        # points in (0, lo) of an argument accepted down to 0
 TIME_POINTS = 4096       # random points of a timing run
 TIME_REPEATS = 5
 CC = ("cc", "-std=c99", "-O2", "-fPIC", "-shared")
@@ -64,6 +69,7 @@ class Job:
     py: Callable
     c: Callable
     code: str               # the emitted Python function (for its branch switches)
+    domain: tuple = ()      # the accepted [lo, hi] of each argument (read from the emitted guard)
 
 
 def _arguments(result) -> tuple[tuple[KernelArg, ...], tuple]:
@@ -79,15 +85,27 @@ class Judge:
         self.job = job
         self.f, self.cond = reference(job.expr, list(job.syms))
 
-    def truth(self, p: tuple, dps: int):
-        with mp.workdps(dps):
+    def truth(self, p: tuple, extra: int = 0):
+        at = [v if v != 0 or not self.zero_limit(i) else LIMIT_AT for i, v in enumerate(p)]
+        with mp.workdps(ref_dps(at) + extra):
+            if any(v != w for v, w in zip(p, at)) and self._vanishes(at):
+                return mp.mpf(0)
+            p = at
             try:
                 return self.f(*[mp.mpf(x) for x in p])
             except (ZeroDivisionError, ValueError, OverflowError):
                 return mp.nan
 
+    def zero_limit(self, i: int) -> bool:
+        """Argument i is accepted down to 0 (there the reference is the limit)."""
+        return i < len(self.job.domain) and self.job.domain[i][0] == 0 < self.job.args[i].lo
+
+    def _vanishes(self, at) -> bool:
+        """The derived form at LIMIT_AT is below 1e-300: its limit is taken as 0."""
+        return abs(self.f(*[mp.mpf(v) for v in at])) < mp.mpf(10) ** -300
+
     def kappa(self, p: tuple) -> float:
-        with mp.workdps(REF_DPS):
+        with mp.workdps(ref_dps(p)):
             try:
                 return float(self.cond(*[mp.mpf(x) for x in p]))
             except (ZeroDivisionError, ValueError, OverflowError):
@@ -107,12 +125,12 @@ class Judge:
             return math.inf
         if true == 0:
             return 0.0 if abs(got) < 1e-300 else math.inf
-        with mp.workdps(REF_DPS):
+        with mp.workdps(max(mp.mp.dps, 50)):
             return float(abs(mp.mpf(got) - true) / mp.mpf(math.ulp(float(true))))
 
-    def errors(self, p: tuple, dps: int = REF_DPS) -> tuple[float, float]:
+    def errors(self, p: tuple, extra: int = 0) -> tuple[float, float]:
         """(Python ulp, C ulp) at p."""
-        true = self.truth(p, dps)
+        true = self.truth(p, extra)
         return self.ulp(self._call(self.job.py, p), true), self.ulp(self._call(self.job.c, p), true)
 
     def scaled(self, p: tuple, floor: float = -1.0) -> tuple[float, float, float, float, float]:
@@ -120,7 +138,7 @@ class Judge:
         (else NaN, and the scaled errors are the ulp errors, an upper bound)."""
         e_py, e_c = self.errors(p)
         if max(e_py, e_c) > kn.BOUND / 2:
-            e_py, e_c = self.errors(p, CONFIRM_DPS)
+            e_py, e_c = self.errors(p, CONFIRM_DIGITS)
         if max(e_py, e_c) <= max(floor, 1.0):
             return e_py, e_c, math.nan, e_py, e_c
         k = self.kappa(p)
@@ -128,12 +146,69 @@ class Judge:
         return e_py, e_c, k, e_py / m, e_c / m
 
 
+def accepted(code: str, name: str, args: Sequence[KernelArg]) -> tuple:
+    """The accepted [lo, hi] of each argument, read from the guard of the emitted Python function
+    ``if not lo <= x <= hi:`` (the declared range where it has none)."""
+    m = re.search(rf"^def {re.escape(name)}\(.*?(?=^def |\Z)", code, re.S | re.M)
+    text = m.group(0) if m else ""
+    out = []
+    for a in args:
+        g = re.search(rf"if not (\S+) <= {re.escape(kn.identifier(a.name))} <= (\S+):", text)
+        out.append((float(g.group(1)), float(g.group(2))) if g else (a.lo, a.hi))
+    return tuple(out)
+
+
+def outside(job: Job, errno_of: Callable[[], int]) -> list[str]:
+    """The documented behaviour outside the accepted domain, tried at NaN, ±inf and the doubles
+    just outside each end of each argument: ValueError naming the argument in Python, NaN with
+    errno = EDOM in C.  Returns the departures from it."""
+    bad = []
+    inside = tuple((lo + hi) / 2 if not a.log else math.sqrt(max(lo, a.lo) * hi)
+                   for a, (lo, hi) in zip(job.args, job.domain))
+    for i, (lo, hi) in enumerate(job.domain):
+        for v in (math.nan, math.inf, -math.inf, math.nextafter(lo, -math.inf), math.nextafter(hi, math.inf)):
+            if lo <= v <= hi:
+                continue
+            p = list(inside)
+            p[i] = v
+            name = kn.identifier(job.args[i].name)
+            try:
+                job.py(*p)
+                bad.append(f"Python {name} = {v!r}: no error")
+            except ValueError as exc:
+                if f"{name} = " not in str(exc) or "domain" not in str(exc):
+                    bad.append(f"Python {name} = {v!r}: {exc}")
+            except Exception as exc:  # any other exception is a departure
+                bad.append(f"Python {name} = {v!r}: {type(exc).__name__}")
+            ctypes.set_errno(0)
+            got = job.c(*p)
+            if not math.isnan(got) or errno_of() != EDOM:
+                bad.append(f"C {name} = {v!r}: {got!r}, errno {errno_of()}")
+    return bad
+
+
+def tiny_points(job: Job, rng_seed: str) -> list[tuple]:
+    """For an argument accepted down to 0: 0, the smallest subnormal, and points log-uniform in (0, lo)."""
+    rng = random.Random(rng_seed + ":tiny")
+    out = []
+    for i, (a, (lo, _)) in enumerate(zip(job.args, job.domain)):
+        if not lo < a.lo:
+            continue
+        vals = [0.0, 5e-324, 1e-310, 1e-300, 1e-160, 1e-150, math.nextafter(a.lo, 0.0)]
+        vals += [math.exp(rng.uniform(math.log(5e-324), math.log(a.lo))) for _ in range(TINY_POINTS)]
+        for v in vals:
+            p = [pt.draw(b, rng) for b in job.args]
+            p[i] = v
+            out.append(tuple(p))
+    return out
+
+
 def audit_one(job: Job) -> dict:
     """The audit of one kernel (run in a worker): its figures and its worst point."""
     start = time.process_time()
     judge = Judge(job)
     params = [kn.identifier(a.name) for a in job.args]
-    hard = pt.hard_points(job.args, params, job.code, job.expr, job.syms, job.name)
+    hard = pt.hard_points(job.args, params, job.code, job.expr, job.syms, job.name) + tiny_points(job, job.name)
     climbs = CLIMB_STARTS * pt.climb_length(CLIMB_BUDGET // CLIMB_STARTS)
     pts = list(dict.fromkeys(hard))
     seen = set(pts)
@@ -176,6 +251,8 @@ def audit_one(job: Job) -> dict:
                    "worst_ulp": round(max(r[2] for r in rows), 3), "over_bound": fails_py},
         "c": {"worst_scaled": round(worst_c[6], 3), "at": list(worst_c[1]),
               "worst_ulp": round(max(r[3] for r in rows), 3), "over_bound": fails_c},
+        "domain_accepted": [list(d) for d in job.domain],
+        "outside": outside(job, ctypes.get_errno),
         "cpu_s": round(time.process_time() - start, 1),
     }
 
@@ -220,7 +297,7 @@ def compile_memoir(generated: Path, memoir: str, kernels: Sequence[tuple[str, in
                            str(timing), "-lm"], capture_output=True, text=True)
     if done.returncode:
         raise RuntimeError(f"cc failed on {memoir}: {done.stderr.strip()[:2000]}")
-    return ctypes.CDLL(str(lib))
+    return ctypes.CDLL(str(lib), use_errno=True)
 
 
 def c_function(lib: ctypes.CDLL, name: str, n: int) -> Callable:
@@ -264,7 +341,7 @@ def jobs(generated: Path, work: Path, only: Sequence[str] = ()) -> tuple[dict[st
         for name, rid in names:
             args, syms = _arguments(built[rid])
             out[name] = Job(name, memoir, rid, args, built[rid].derived, syms, getattr(mod, name),
-                            c_function(lib, name, len(args)), text)
+                            c_function(lib, name, len(args)), text, accepted(text, name, args))
     return out, libs
 
 
@@ -285,7 +362,9 @@ def table(rows: Sequence[dict]) -> str:
 
 
 def over(rows: Sequence[dict]) -> list[dict]:
-    return [r for r in rows if r["python"]["worst_scaled"] > kn.BOUND or r["c"]["worst_scaled"] > kn.BOUND]
+    """The kernels over the bound in either language, or departing from the behaviour outside the domain."""
+    return [r for r in rows if r["python"]["worst_scaled"] > kn.BOUND or r["c"]["worst_scaled"] > kn.BOUND
+            or r.get("outside")]
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -318,5 +397,5 @@ def main(argv: Sequence[str] | None = None) -> int:
     for r in bad:
         print(f"OVER THE BOUND {r['kernel']}: Python {r['python']['worst_scaled']:.3g} "
               f"({r['python']['over_bound']} points), C {r['c']['worst_scaled']:.3g} ({r['c']['over_bound']} points) "
-              f"at {_fmt_point(r['args'], r['worst_at'])}")
+              f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else ""))
     return 1 if bad else 0
