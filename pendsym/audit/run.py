@@ -52,7 +52,7 @@ POINTS = 20_000          # points per kernel, the search included
 CLIMB_STARTS = 8         # the worst points the search starts from
 CLIMB_BUDGET = 1_200     # evaluations of the search, over its starts
 CONFIRM_DIGITS = 60      # more digits for a point whose error exceeds half the bound
-TINY_POINTS = 400        # points in (0, lo) of an argument accepted down to 0
+TINY_POINTS = 64         # points in (0, lo) of an argument accepted down to 0 (each needs up to 2,600 digits)
 TIME_POINTS = 4096       # random points of a timing run
 TIME_REPEATS = 5
 CC = ("cc", "-std=c99", "-O2", "-fPIC", "-shared")
