@@ -118,3 +118,32 @@ def test_identifiers_avoid_python_keywords():
     assert kn.identifier("lambda") == "lambda_"
     assert kn.identifier("p'") == "p_prime"
     compile(f"def f({kn.identifier('lambda')}, {kn.identifier('u')}):\n    return 0\n", "<k>", "exec")
+
+
+# The three kernels issue #11 found over the bound, at the points it gives and around them: F2 on
+# the vertex curve of its quadratic in K, J at small u (the vertex form cancels there), F near the
+# stationary points of its quartic in K.
+REGRESSIONS = {
+    "eq169_F2": [(1.5015 * (1 + i * 1e-4), -2.2306 * (1 + j * 1e-4)) for i in range(-5, 6) for j in range(-5, 6)]
+    + [(1.0588539220054696, -0.8643899967656781), (1.5313994693445694, -2.125601621223299),
+       (1.42407, -2.65043)],
+    "eq183_J": [(0.0107, 0.0078 * (1 + i * 1e-3), 0.365 * (1 + j * 1e-3)) for i in range(-5, 6) for j in range(-5, 6)]
+    + [(0.0214198, 0.122404, 2.41522), (0.09130914662799149, 2.6372245755670003e-05, 0.8904929265406306)],
+    "eq170_F": [(1.25 + 0.25 * i / 14, -2.7 + 0.4 * j / 14) for i in range(15) for j in range(15)],
+}
+
+
+# F2 is still over the bound near its vertex curve (make audit: 7.9 scaled at u = 1.006, K = −1.094): a strict
+# xfail, so a fix shows.  F holds it in the region of the issue (its audit failure is at u = 2.8e-65).
+OPEN = pytest.mark.xfail(strict=True, reason="issue #11: still over the bound (make audit)")
+
+
+@pytest.mark.parametrize("name", [pytest.param("eq169_F2", marks=OPEN), "eq183_J", "eq170_F"])
+def test_the_kernels_issue_11_found_over_the_bound_hold_it_there(kernel_table, clib, pymod, name):
+    found = [(memoir, r, args) for memoir, n, r, args in kernel_table if n == name]
+    assert found, f"{name} is not emitted"
+    memoir, r, args = found[0]
+    pts = REGRESSIONS[name]
+    for fn in (getattr(pymod[memoir], name), _fn(clib[memoir], name, len(args))):
+        acc = kn.measure(fn, r.derived, args, pts)
+        assert acc.max_scaled <= BOUND, (name, acc)

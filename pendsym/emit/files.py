@@ -26,7 +26,7 @@ def _sources(ks: Sequence[kn.Kernel]) -> str:
 
 def _functions(ks: Sequence[kn.Kernel]) -> tuple[kn.Function, ...]:
     """The file's functions in order: the kernels, each after the shared parts it calls."""
-    return kn.share(tuple(kn.kernel_function(k.name, k.args, k.expr) for k in ks))
+    return kn.share(tuple(kn.kernel_function(k.name, k.args, k.expr, k.domain) for k in ks))
 
 
 def _definitions(ks: Sequence[kn.Kernel], lang: str, docs: bool) -> list[str]:
@@ -49,7 +49,7 @@ def c_source(memoir: str, ks: Sequence[kn.Kernel]) -> str:
 
 def c_header(memoir: str, ks: Sequence[kn.Kernel]) -> str:
     return render("kernels.h.j2", memoir=memoir, sources=_sources(ks), contract=kn.CONTRACT,
-                  protos=[(k.docstring(), kn.prototype(kn.kernel_function(k.name, k.args, k.expr), "c")) for k in ks])
+                  protos=[(k.docstring(), kn.prototype(kn.kernel_function(k.name, k.args, k.expr, k.domain), "c")) for k in ks])
 
 
 def c_standalone(memoir: str, ks: Sequence[kn.Kernel]) -> str:

@@ -46,11 +46,11 @@ def c_accuracy(lib: ctypes.CDLL, k, result: Result) -> Accuracy:
                    kernel_sample(result.derived, k.args, k.name), k.reference or None)
 
 
-def emitted_py(name: str, args: Sequence[KernelArg], expr: sp.Expr) -> Callable[..., float]:
+def emitted_py(name: str, args: Sequence[KernelArg], expr: sp.Expr, domain: tuple = ()) -> Callable[..., float]:
     """The kernel's Python function exactly as emitted (templates/function.py.j2), compiled
     here: the accuracy reported is that of the generated code, whose subexpressions and
     branches may round differently from the single expression the forms were ranked with."""
     namespace = {"math": math}
-    text = definition(kernel_function(name, args, expr), "py")
+    text = definition(kernel_function(name, args, expr, domain), "py")
     exec(compile(text, f"<kernel {name}>", "exec"), namespace)   # our own generated code
     return namespace[name]

@@ -15,6 +15,7 @@ from ...result import KernelArg, Result
 from .choice import choose_form, naive_form
 from .compile import emitted_py
 from .leaves import hard_argument
+from .limits import accepted_domain
 from .measure import Accuracy, Naive, measure, measure_naive, references
 from .sampling import kernel_sample
 
@@ -35,11 +36,15 @@ class Kernel:
     notes: tuple[str, ...] = ()      # the pieces of a stable form, with their measured errors
     naive: Naive | None = None
     reference: tuple = ()            # (50-digit value, κ) at each sample point, for the C measurement
+    domain: tuple = ()               # the accepted [lo, hi] of each argument (default: the declared one)
 
     def docstring(self) -> str:
         """The kernel's own figures: source, domain, form, measured errors, the naive form's;
         the contract they are measured against is stated once, in docs/kernel-accuracy.md."""
         dom = "; ".join(f"{a.name} in [{a.lo:g}, {a.hi:g}] {a.unit}" for a in self.args)
+        ext = [f"{a.name} down to {lo:g}" for a, (lo, _) in zip(self.args, self.domain) if lo < a.lo]
+        if ext:
+            dom += f" (accepted, and measured by make audit, {', '.join(ext)}: the limit)"
         lines = [f"{self.doc} — {self.result_id} ({self.ref}).", f"Domain: {dom}.", f"Form: rewrite rule '{self.rule}'."]
         lines += [f"  {n}" for n in self.notes]
         measured = [f"{lang} {acc.max_ulp:.3g} ulp ({acc.max_scaled:.3g} scaled)"
@@ -88,5 +93,6 @@ def kernel_of(result: Result) -> Kernel | None:
     form, naive_expr = naive_form(result, args)
     hard = hard_argument(result.derived, args)
     naive = measure_naive(naive_expr, form, result.derived, args, pts, args.index(hard) if hard is not None else 0)
+    domain = accepted_domain(result.derived, args, name, choice.form)
     return Kernel(name, result.id, args, choice.form, choice.rule, spec.kernel.doc or spec.title, spec.source.ref(),
-                  py_accuracy=py, notes=choice.notes, naive=naive, reference=truths)
+                  py_accuracy=py, notes=choice.notes, naive=naive, reference=truths, domain=domain)

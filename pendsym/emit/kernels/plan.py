@@ -26,6 +26,13 @@ class Grouped(sp.Function):
     nargs = 1
 
 
+class Magnitude(sp.Function):
+    """|x| of a real double (fabs in C, abs in Python), for the tests that choose a form; unlike
+    ``Abs`` it is not rewritten with ``conjugate`` for symbols of unknown sign."""
+
+    nargs = 1
+
+
 class If(Token):
     """``if … else if … else``: `branches`, a tuple of (condition, CodeBlock); a last condition
     ``true`` is the ``else``."""

@@ -63,6 +63,9 @@ class _Statements:
     def _print_Grouped(self, expr) -> str:
         return "(" + self._print(expr.args[0]) + ")"
 
+    def _print_Magnitude(self, expr) -> str:
+        return f"{self._abs}({self._print(expr.args[0])})"
+
     def _print_CodeBlock(self, block, depth: int = 1) -> str:
         lines = []
         for s in block.args:
@@ -94,6 +97,8 @@ class _Statements:
 class KernelC(_Statements, C99CodePrinter):
     """C99 printer: small integer powers as products, no pow() for them; π as a literal
     (M_PI is POSIX, not C99); a Grouped leaf in parentheses; a shared part a static function."""
+
+    _abs = "fabs"
 
     def _print_Pi(self, expr):
         return "3.14159265358979323846264338327950288"
@@ -134,6 +139,8 @@ class KernelPy(_Statements, PythonCodePrinter):
     """Python printer for math-only kernels (no SymPy at import); a Grouped leaf in
     parentheses; a shared part a private function."""
 
+    _abs = "abs"
+
     def __init__(self, settings=None):
         super().__init__({"fully_qualified_modules": True, **(settings or {})})
 
@@ -170,6 +177,7 @@ class Function:
     params: tuple[sp.Symbol, ...]
     expr: sp.Expr
     callers: tuple[str, ...] = ()
+    domain: tuple[tuple[float, float], ...] = ()   # the accepted [lo, hi] of each parameter (a kernel's)
 
 
 def prototype_ast(f: Function) -> FunctionPrototype:
@@ -185,10 +193,34 @@ def function_ast(f: Function) -> FunctionDefinition:
 
 @dataclass(frozen=True)
 class Printed:
-    """A function as printed: the prototype line and the body's statements."""
+    """A function as printed: the prototype line, the test of its arguments and the body's statements."""
 
     prototype: str
     body: str
+    guard: str = ""
+
+
+def _bound(v: float) -> str:
+    return repr(float(v))
+
+
+def guard(f: Function, lang: str) -> str:
+    """The test of each argument against its accepted domain, the same in both languages (the
+    behaviour outside the domain, docs/kernel-accuracy.md): a NaN or a value outside [lo, hi]
+    is a domain error, ValueError in Python (naming the argument and the domain), NaN with
+    errno = EDOM in C."""
+    out = []
+    for p, (lo, hi) in zip(f.params, f.domain):
+        name = PRINTERS[lang]()._print(p)
+        where = f"[{lo:g}, {hi:g}]"
+        if lang == "py":
+            out += [f"{INDENT}if not {_bound(lo)} <= {name} <= {_bound(hi)}:",
+                    f'{INDENT * 2}raise ValueError(f"{f.name}: {name} = {{{name}!r}} is outside its domain {where}")']
+        else:
+            out += [f"{INDENT}if (!({_bound(lo)} <= {name} && {name} <= {_bound(hi)})) {{",
+                    f"{INDENT * 2}errno = EDOM;  /* {name} outside its domain {where} */",
+                    f"{INDENT * 2}return NAN;", f"{INDENT}}}"]
+    return "\n".join(out)
 
 
 def prototype(f: Function, lang: str) -> str:
@@ -199,12 +231,15 @@ def prototype(f: Function, lang: str) -> str:
 @functools.lru_cache(maxsize=512)
 def printed(f: Function, lang: str) -> Printed:
     """f printed in C ("c") or Python ("py")."""
-    return Printed(prototype(f, lang), PRINTERS[lang]().doprint(function_ast(f).body))
+    return Printed(prototype(f, lang), PRINTERS[lang]().doprint(function_ast(f).body), guard(f, lang))
 
 
-def kernel_function(name: str, args: Sequence[KernelArg], expr: sp.Expr) -> Function:
-    """The Function of a kernel named `name` of its arguments, returning expr."""
-    return Function(name, tuple(parameter(a) for a in args), printable(expr, args))
+def kernel_function(name: str, args: Sequence[KernelArg], expr: sp.Expr,
+                    domain: Sequence[tuple[float, float]] | None = None) -> Function:
+    """The Function of a kernel named `name` of its arguments, returning expr; its arguments are
+    tested against `domain` (default: the declared [lo, hi] of each)."""
+    dom = tuple(domain) if domain else tuple((a.lo, a.hi) for a in args)
+    return Function(name, tuple(parameter(a) for a in args), printable(expr, args), domain=dom)
 
 
 def definition(f: Function, lang: str, doc: str = "") -> str:
@@ -215,10 +250,10 @@ def definition(f: Function, lang: str, doc: str = "") -> str:
 
 def c_function(k) -> tuple[str, str]:
     """(prototype, definition) of a kernel in C99, standalone (no shared parts)."""
-    f = kernel_function(k.name, k.args, k.expr)
+    f = kernel_function(k.name, k.args, k.expr, k.domain)
     return printed(f, "c").prototype, definition(f, "c")
 
 
 def py_function(k) -> str:
     """The Python definition of a kernel, standalone (no shared parts), with its docstring."""
-    return definition(kernel_function(k.name, k.args, k.expr), "py", k.docstring())
+    return definition(kernel_function(k.name, k.args, k.expr, k.domain), "py", k.docstring())

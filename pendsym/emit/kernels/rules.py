@@ -22,6 +22,7 @@ import sympy as sp
 from sympy.codegen.cfunctions import expm1
 
 from ...result import KernelArg
+from .plan import Magnitude
 
 # ----------------------------------------------------------------- whole-expression rewrites
 
@@ -236,6 +237,30 @@ class SkeletonForm:
         return self.apply(skeleton, leaves)
 
 
+def near_vertex_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | None:
+    """The vertex form where it cancels less than the plain form, the plain form elsewhere.
+
+    Near the vertex the plain form A K² + B K + C cancels; far from it (for instance when c
+    grows like 1/x² and A(K − c)² and D are both huge) the vertex form cancels instead.  Each
+    form's rounding is amplified by the sum of the magnitudes of its terms: |C| + |BK| + |AK²|
+    for the plain form, |A|(K − c)² + 2|A (K − c) c| + |AD| for the vertex form (the middle
+    term: the rounding of c), and the form with the smaller sum is evaluated.  Every leaf is
+    evaluated first, for the test."""
+    got = vertex_form(skeleton, leaves)
+    vx = quadratic_vertex(skeleton, leaves)
+    if got is None or vx is None:
+        return None
+    vform, new = got
+    K, A = vx[0], vx[1]
+    c_sym, e_sym = sp.Symbol(f"leaf_{len(leaves)}"), sp.Symbol(f"leaf_{len(leaves) + 1}")
+    poly = sp.Poly(skeleton, K)
+    plain_sum = sp.Add(*[Magnitude(cf * K**m) for (m,), cf in poly.terms()])
+    P, a = A.as_independent(*leaves)
+    vertex_sum = Magnitude(A * (K - c_sym) ** 2) + 2 * Magnitude(A * (K - c_sym) * c_sym) + Magnitude(P * e_sym)
+    return sp.Piecewise((vform, vertex_sum < plain_sum), (skeleton, True)), new
+
+
 PLAIN = SkeletonForm("", lambda skeleton, leaves: (skeleton, leaves))
 VERTEX = SkeletonForm(", in vertex form", vertex_form)
-SKELETONS: tuple[SkeletonForm, ...] = (PLAIN, VERTEX)
+NEAR_VERTEX = SkeletonForm(", in vertex form where it cancels less", near_vertex_form)
+SKELETONS: tuple[SkeletonForm, ...] = (PLAIN, VERTEX, NEAR_VERTEX)

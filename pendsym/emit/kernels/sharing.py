@@ -57,7 +57,7 @@ def _split_off(fns: list[Function], unit: sp.Basic) -> list[Function]:
     params = tuple(p for p in users[0].params if p in value.free_symbols)
     name = _part_name(users[0].name, fns)
     call = sp.Function(name, real=True)(*params)
-    out = [Function(f.name, f.params, f.expr.xreplace({unit: call}), f.callers) if f.name in mine else f
+    out = [Function(f.name, f.params, f.expr.xreplace({unit: call}), f.callers, f.domain) if f.name in mine else f
            for f in fns]
     return out + [Function(name, params, value, tuple(f.name for f in users))]
 

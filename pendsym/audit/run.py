@@ -1,0 +1,401 @@
+"""``make audit``: every generated kernel measured as a user would call it, hunting for its worst case.
+
+For each kernel listed in ``generated/results.json``:
+
+1. the emitted C (``generated/c/<memoir>.c`` compiled with ``cc -std=c99 -O2``, its own
+   translation unit) and the emitted Python (``generated/python/<memoir>.py`` imported) are
+   evaluated on at least :data:`POINTS` points: the hard points and random points of
+   :mod:`.points`, then an adversarial local search (:func:`.points.climb`) from the worst
+   points found, which climbs the scaled error ulp / max(1, κ);
+2. the reference is the Result's *derived* form in mpmath at 50 digits, 8 more per decade the
+   smallest argument lies below 1 (:func:`pendsym.emit.kernels.limits.ref_dps`), and
+   every point whose error exceeds half the bound is confirmed with :data:`CONFIRM_DIGITS` more;
+   κ is the condition number of :func:`pendsym.emit.kernels.measure.reference` (computed where
+   the error in ulp could exceed the scaled error already found: scaled ≤ ulp);
+3. the C time per call is measured on random points of the domain (min and median of 5 runs).
+
+It writes ``<out>/audit.json`` and ``<out>/audit.md`` and exits 1 when a kernel is over
+:data:`pendsym.emit.kernels.BOUND` in either language.  Seeds are the kernels' names.
+"""
+from __future__ import annotations
+
+import argparse
+import ctypes
+import importlib.util
+import json
+import math
+import random
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from errno import EDOM
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Sequence
+
+import mpmath as mp
+import sympy as sp
+
+from .. import pipeline, schedule, stages
+from ..emit import kernels as kn
+from ..emit.kernels.limits import ref_dps
+from ..emit.kernels.measure import reference
+from ..result import KernelArg
+from . import points as pt
+
+LIMIT_AT = 1e-80         # the reference at 0 of an argument accepted down to 0: the form here
+POINTS = 20_000          # points per kernel, the search included
+CLIMB_STARTS = 8         # the worst points the search starts from
+CLIMB_BUDGET = 1_200     # evaluations of the search, over its starts
+CONFIRM_DIGITS = 60      # more digits for a point whose error exceeds half the bound
+TINY_POINTS = 64         # points in (0, lo) of an argument accepted down to 0 (each needs up to 2,600 digits)
+TIME_POINTS = 4096       # random points of a timing run
+TIME_REPEATS = 5
+CC = ("cc", "-std=c99", "-O2", "-fPIC", "-shared")
+
+
+@dataclass(frozen=True)
+class Job:
+    name: str
+    memoir: str
+    result_id: str
+    args: tuple[KernelArg, ...]
+    expr: sp.Expr
+    syms: tuple
+    py: Callable
+    c: Callable
+    code: str               # the emitted Python function (for its branch switches)
+    domain: tuple = ()      # the accepted [lo, hi] of each argument (read from the emitted guard)
+
+
+def _arguments(result) -> tuple[tuple[KernelArg, ...], tuple]:
+    by = {s.name: s for s in result.derived.free_symbols}
+    args = tuple(a for a in result.spec.kernel.args if a.name in by)
+    return args, tuple(by[a.name] for a in args)
+
+
+class Judge:
+    """The scaled error of a kernel's Python and C at a point, against the derived form."""
+
+    def __init__(self, job: Job):
+        self.job = job
+        self.f, self.cond = reference(job.expr, list(job.syms))
+
+    def truth(self, p: tuple, extra: int = 0):
+        at = [v if v != 0 or not self.zero_limit(i) else LIMIT_AT for i, v in enumerate(p)]
+        with mp.workdps(ref_dps(at) + extra):
+            if any(v != w for v, w in zip(p, at)) and self._vanishes(at):
+                return mp.mpf(0)
+            p = at
+            try:
+                return self.f(*[mp.mpf(x) for x in p])
+            except (ZeroDivisionError, ValueError, OverflowError):
+                return mp.nan
+
+    def zero_limit(self, i: int) -> bool:
+        """Argument i is accepted down to 0 (there the reference is the limit)."""
+        return i < len(self.job.domain) and self.job.domain[i][0] == 0 < self.job.args[i].lo
+
+    def _vanishes(self, at) -> bool:
+        """The derived form at LIMIT_AT is below 1e-300: its limit is taken as 0."""
+        return abs(self.f(*[mp.mpf(v) for v in at])) < mp.mpf(10) ** -300
+
+    def kappa(self, p: tuple) -> float:
+        with mp.workdps(ref_dps(p)):
+            try:
+                return float(self.cond(*[mp.mpf(x) for x in p]))
+            except (ZeroDivisionError, ValueError, OverflowError):
+                return math.inf
+
+    @staticmethod
+    def _call(fn, p) -> float:
+        try:
+            v = float(fn(*p))
+        except (OverflowError, ZeroDivisionError, ValueError):
+            return math.nan
+        return v
+
+    @staticmethod
+    def ulp(got: float, true) -> float:
+        if not math.isfinite(got) or not mp.isfinite(true):
+            return math.inf
+        if true == 0:
+            return 0.0 if abs(got) < 1e-300 else math.inf
+        with mp.workdps(max(mp.mp.dps, 50)):
+            return float(abs(mp.mpf(got) - true) / mp.mpf(math.ulp(float(true))))
+
+    def errors(self, p: tuple, extra: int = 0) -> tuple[float, float]:
+        """(Python ulp, C ulp) at p."""
+        true = self.truth(p, extra)
+        return self.ulp(self._call(self.job.py, p), true), self.ulp(self._call(self.job.c, p), true)
+
+    def scaled(self, p: tuple, floor: float = -1.0) -> tuple[float, float, float, float, float]:
+        """(Python ulp, C ulp, κ, Python scaled, C scaled); κ only where the error could beat `floor`
+        (else NaN, and the scaled errors are the ulp errors, an upper bound)."""
+        e_py, e_c = self.errors(p)
+        if max(e_py, e_c) > kn.BOUND / 2:
+            e_py, e_c = self.errors(p, CONFIRM_DIGITS)
+        if max(e_py, e_c) <= max(floor, 1.0):
+            return e_py, e_c, math.nan, e_py, e_c
+        k = self.kappa(p)
+        m = max(1.0, k) if not math.isnan(k) else 1.0
+        return e_py, e_c, k, e_py / m, e_c / m
+
+
+def accepted(code: str, name: str, args: Sequence[KernelArg]) -> tuple:
+    """The accepted [lo, hi] of each argument, read from the guard of the emitted Python function
+    ``if not lo <= x <= hi:`` (the declared range where it has none)."""
+    m = re.search(rf"^def {re.escape(name)}\(.*?(?=^def |\Z)", code, re.S | re.M)
+    text = m.group(0) if m else ""
+    out = []
+    for a in args:
+        g = re.search(rf"if not (\S+) <= {re.escape(kn.identifier(a.name))} <= (\S+):", text)
+        out.append((float(g.group(1)), float(g.group(2))) if g else (a.lo, a.hi))
+    return tuple(out)
+
+
+def outside(job: Job, errno_of: Callable[[], int]) -> list[str]:
+    """The documented behaviour outside the accepted domain, tried at NaN, ±inf and the doubles
+    just outside each end of each argument: ValueError naming the argument in Python, NaN with
+    errno = EDOM in C.  Returns the departures from it."""
+    bad = []
+    inside = tuple((lo + hi) / 2 if not a.log else math.sqrt(max(lo, a.lo) * hi)
+                   for a, (lo, hi) in zip(job.args, job.domain))
+    for i, (lo, hi) in enumerate(job.domain):
+        for v in (math.nan, math.inf, -math.inf, math.nextafter(lo, -math.inf), math.nextafter(hi, math.inf)):
+            if lo <= v <= hi:
+                continue
+            p = list(inside)
+            p[i] = v
+            name = kn.identifier(job.args[i].name)
+            try:
+                job.py(*p)
+                bad.append(f"Python {name} = {v!r}: no error")
+            except ValueError as exc:
+                if f"{name} = " not in str(exc) or "domain" not in str(exc):
+                    bad.append(f"Python {name} = {v!r}: {exc}")
+            except Exception as exc:  # any other exception is a departure
+                bad.append(f"Python {name} = {v!r}: {type(exc).__name__}")
+            ctypes.set_errno(0)
+            got = job.c(*p)
+            if not math.isnan(got) or errno_of() != EDOM:
+                bad.append(f"C {name} = {v!r}: {got!r}, errno {errno_of()}")
+    return bad
+
+
+def tiny_points(job: Job, rng_seed: str) -> list[tuple]:
+    """For an argument accepted down to 0: 0, the smallest subnormal, and points log-uniform in (0, lo)."""
+    rng = random.Random(rng_seed + ":tiny")
+    out = []
+    for i, (a, (lo, _)) in enumerate(zip(job.args, job.domain)):
+        if not lo < a.lo:
+            continue
+        vals = [0.0, 5e-324, 1e-310, 1e-300, 1e-160, 1e-150, math.nextafter(a.lo, 0.0)]
+        vals += [math.exp(rng.uniform(math.log(5e-324), math.log(a.lo))) for _ in range(TINY_POINTS)]
+        for v in vals:
+            p = [pt.draw(b, rng) for b in job.args]
+            p[i] = v
+            out.append(tuple(p))
+    return out
+
+
+def audit_one(job: Job) -> dict:
+    """The audit of one kernel (run in a worker): its figures and its worst point."""
+    start = time.process_time()
+    judge = Judge(job)
+    params = [kn.identifier(a.name) for a in job.args]
+    hard = pt.hard_points(job.args, params, job.code, job.expr, job.syms, job.name) + tiny_points(job, job.name)
+    climbs = CLIMB_STARTS * pt.climb_length(CLIMB_BUDGET // CLIMB_STARTS)
+    pts = list(dict.fromkeys(hard))
+    seen = set(pts)
+    pts += [p for p in dict.fromkeys(pt.random_points(job.args, job.name, max(0, POINTS - len(pts) - climbs)))
+            if p not in seen]
+    rows = []                                   # (max scaled, point, py ulp, c ulp, κ, py scaled, c scaled)
+    first = [(p, judge.errors(p)) for p in pts]
+    # κ in decreasing order of the ulp error, until no further point can enter the worst few
+    first.sort(key=lambda r: -max(r[1]))
+    worst: list = []
+    for p, (e_py, e_c) in first:
+        floor = sorted(w[0] for w in worst)[-CLIMB_STARTS] if len(worst) >= CLIMB_STARTS else -1.0
+        if max(e_py, e_c) <= max(floor, 1.0) and max(e_py, e_c) <= kn.BOUND:
+            rows.append((max(e_py, e_c), p, e_py, e_c, math.nan, e_py, e_c))
+            continue
+        row = judge.scaled(p)
+        rows.append((max(row[3], row[4]), p, *row))
+        worst.append(rows[-1])
+    tried = len(pts)
+    starts = sorted(worst or rows, key=lambda r: -r[0])[:CLIMB_STARTS]
+    for r in starts:
+        def score(q, floor):
+            row = judge.scaled(q, floor)
+            rows.append((max(row[3], row[4]), q, *row))
+            return rows[-1][0]
+        _, _, seen = pt.climb(r[1], r[0], score, job.args, job.name, CLIMB_BUDGET // max(1, len(starts)))
+        tried += len(seen)
+    top = max(rows, key=lambda r: (r[0], -sum(r[1])))
+    fails_py = sum(1 for r in rows if r[5] > kn.BOUND)
+    fails_c = sum(1 for r in rows if r[6] > kn.BOUND)
+    worst_py = max(rows, key=lambda r: r[5])
+    worst_c = max(rows, key=lambda r: r[6])
+    return {
+        "kernel": job.name, "memoir": job.memoir, "result": job.result_id, "points": tried,
+        "args": [a.name for a in job.args],
+        "domain": [[a.lo, a.hi] for a in job.args],
+        "worst_scaled": round(top[0], 3), "worst_at": list(top[1]),
+        "kappa_there": None if math.isnan(top[4]) else top[4],
+        "python": {"worst_scaled": round(worst_py[5], 3), "at": list(worst_py[1]),
+                   "worst_ulp": round(max(r[2] for r in rows), 3), "over_bound": fails_py},
+        "c": {"worst_scaled": round(worst_c[6], 3), "at": list(worst_c[1]),
+              "worst_ulp": round(max(r[3] for r in rows), 3), "over_bound": fails_c},
+        "domain_accepted": [list(d) for d in job.domain],
+        "outside": outside(job, ctypes.get_errno),
+        "cpu_s": round(time.process_time() - start, 1),
+    }
+
+
+# ----------------------------------------------------------------- the emitted code, loaded as a user would
+def _load_py(path: Path):
+    spec = importlib.util.spec_from_file_location(f"audited_{path.stem}", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def timing_source(memoir: str, kernels: Sequence[tuple[str, int]]) -> str:
+    """A translation unit apart from the kernels' that times each of them on an array of points."""
+    out = ["#define _POSIX_C_SOURCE 199309L", "#include <time.h>", f'#include "{memoir}.h"', ""]
+    for name, n in kernels:
+        call = ", ".join(f"x[{n}*i+{j}]" for j in range(n))
+        out.append(f"""double time_{name}(const double *x, long n, long reps)
+{{
+    volatile double sink = 0.0;
+    double acc = 0.0;
+    struct timespec a, b;
+    clock_gettime(CLOCK_MONOTONIC, &a);
+    for (long r = 0; r < reps; ++r)
+        for (long i = 0; i < n; ++i)
+            acc += {name}({call});
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    sink = acc;
+    (void)sink;
+    return ((b.tv_sec - a.tv_sec) * 1e9 + (b.tv_nsec - a.tv_nsec)) / ((double)reps * n);
+}}
+""")
+    return "\n".join(out)
+
+
+def compile_memoir(generated: Path, memoir: str, kernels: Sequence[tuple[str, int]], work: Path) -> ctypes.CDLL:
+    """generated/c/<memoir>.c and a timing unit, each its own translation unit, into one library."""
+    timing = work / f"{memoir}_timing.c"
+    timing.write_text(timing_source(memoir, kernels))
+    lib = work / f"lib{memoir}.so"
+    done = subprocess.run([*CC, "-I", str(generated / "c"), "-o", str(lib), str(generated / "c" / f"{memoir}.c"),
+                           str(timing), "-lm"], capture_output=True, text=True)
+    if done.returncode:
+        raise RuntimeError(f"cc failed on {memoir}: {done.stderr.strip()[:2000]}")
+    return ctypes.CDLL(str(lib), use_errno=True)
+
+
+def c_function(lib: ctypes.CDLL, name: str, n: int) -> Callable:
+    fn = getattr(lib, name)
+    fn.restype = ctypes.c_double
+    fn.argtypes = [ctypes.c_double] * n
+    return fn
+
+
+def c_ns(lib: ctypes.CDLL, job: Job) -> tuple[float, float]:
+    """(min, median) ns per call of the C kernel over TIME_REPEATS runs on random points of its domain."""
+    pts = pt.random_points(job.args, job.name + ":time", TIME_POINTS)
+    flat = (ctypes.c_double * (len(pts) * len(job.args)))(*[v for p in pts for v in p])
+    fn = getattr(lib, f"time_{job.name}")
+    fn.restype = ctypes.c_double
+    fn.argtypes = [ctypes.c_void_p, ctypes.c_long, ctypes.c_long]
+    fn(flat, len(pts), 2)                                   # warm up, and the reps for ~2 ms
+    reps = max(1, int(2e6 / max(1.0, fn(flat, len(pts), 1) * len(pts))))
+    runs = [fn(flat, len(pts), reps) for _ in range(TIME_REPEATS)]
+    return round(min(runs), 1), round(statistics.median(runs), 1)
+
+
+def jobs(generated: Path, work: Path, only: Sequence[str] = ()) -> tuple[dict[str, Job], dict[str, ctypes.CDLL]]:
+    """The kernels listed in results.json, with their emitted Python and C loaded, and the
+    derived forms of their Results (from the cache of make derive)."""
+    listed = pipeline.load_results_json(generated / "results.json")
+    pl = stages.plan("full")
+    built = stages.build(pl, lambda _msg: None)
+    by_memoir: dict[str, list] = {}
+    for rid, rec in listed.items():
+        for name in rec["kernels"]:
+            if only and name not in only:
+                continue
+            by_memoir.setdefault(rec["memoir"], []).append((name, rid))
+    out, libs = {}, {}
+    for memoir, names in by_memoir.items():
+        mod = _load_py(generated / "python" / f"{memoir}.py")
+        arity = {name: len(_arguments(built[rid])[0]) for name, rid in names}
+        libs[memoir] = lib = compile_memoir(generated, memoir, list(arity.items()), work)
+        text = (generated / "python" / f"{memoir}.py").read_text()
+        for name, rid in names:
+            args, syms = _arguments(built[rid])
+            out[name] = Job(name, memoir, rid, args, built[rid].derived, syms, getattr(mod, name),
+                            c_function(lib, name, len(args)), text, accepted(text, name, args))
+    return out, libs
+
+
+# ----------------------------------------------------------------- report
+def _fmt_point(job_args: Sequence[str], p: Sequence[float]) -> str:
+    return ", ".join(f"{a} = {v:.6g}" for a, v in zip(job_args, p))
+
+
+def table(rows: Sequence[dict]) -> str:
+    lines = ["| kernel | points | worst ulp/max(1, κ) (Python, C) | where | C ns/call (min, median) | numpy ns/element |",
+             "|---|---:|---:|---|---:|---:|"]
+    for r in rows:
+        ns = r.get("c_ns")
+        lines.append(f"| `{r['kernel']}` | {r['points']} | {r['python']['worst_scaled']:.3g}, {r['c']['worst_scaled']:.3g} "
+                     f"| {_fmt_point(r['args'], r['worst_at'])} | "
+                     f"{f'{ns[0]:.0f}, {ns[1]:.0f}' if ns else '—'} | {r.get('numpy_ns') or '—'} |")
+    return "\n".join(lines) + "\n"
+
+
+def over(rows: Sequence[dict]) -> list[dict]:
+    """The kernels over the bound in either language, or departing from the behaviour outside the domain."""
+    return [r for r in rows if r["python"]["worst_scaled"] > kn.BOUND or r["c"]["worst_scaled"] > kn.BOUND
+            or r.get("outside")]
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m pendsym.audit", description=__doc__.split("\n")[0])
+    ap.add_argument("--generated", default="generated")
+    ap.add_argument("--out", default="generated/audit")
+    ap.add_argument("--only", nargs="*", default=(), help="kernel names (default: every kernel)")
+    ap.add_argument("--no-timing", action="store_true")
+    ns = ap.parse_args(argv)
+    if not shutil.which("cc"):
+        print("audit: no C compiler (cc)", file=sys.stderr)
+        return 2
+    t0, c0 = time.monotonic(), time.process_time()
+    generated, out = Path(ns.generated), Path(ns.out)
+    with tempfile.TemporaryDirectory() as tmp:
+        todo, libs = jobs(generated, Path(tmp), ns.only)
+        ids = sorted(todo, key=lambda n: -sp.count_ops(todo[n].expr) * len(todo[n].args))
+        results = dict(zip(ids, schedule.per_result(todo, ids, audit_one)))
+        rows = [results[n] for n in todo]
+        if not ns.no_timing:
+            for r in rows:
+                r["c_ns"] = list(c_ns(libs[r["memoir"]], todo[r["kernel"]]))
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "audit.json").write_text(json.dumps({"bound": kn.BOUND, "kernels": rows}, indent=1) + "\n")
+    (out / "audit.md").write_text(table(rows))
+    bad = over(rows)
+    cpu = time.process_time() - c0 + sum(r["cpu_s"] for r in rows) * (schedule.can_fork())
+    print(f"audit: {len(rows)} kernels, {sum(r['points'] for r in rows)} points, "
+          f"{time.monotonic() - t0:.0f} s wall, ~{cpu:.0f} s CPU; written to {out}")
+    for r in bad:
+        print(f"OVER THE BOUND {r['kernel']}: Python {r['python']['worst_scaled']:.3g} "
+              f"({r['python']['over_bound']} points), C {r['c']['worst_scaled']:.3g} ({r['c']['over_bound']} points) "
+              f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else ""))
+    return 1 if bad else 0

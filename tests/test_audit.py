@@ -1,0 +1,82 @@
+"""pendsym.audit: the points of the deep audit (hard points, the adversarial search) and its
+verdict, on small kernels whose worst points are known."""
+import math
+
+import mpmath as mp
+import pytest
+import sympy as sp
+
+from pendsym.audit import points as pt
+from pendsym.audit import run
+from pendsym.result import KernelArg
+
+u, K = sp.symbols("u K", real=True)
+ARGS = (KernelArg("u", 1e-6, 700.0, log=True), KernelArg("K", -3.0, 3.0))
+
+
+def test_switches_are_read_from_the_emitted_comparisons():
+    code = "def f(u, K):\n    if (u < 0.125):\n        x = 1\n    elif (u < 3.0):\n        x = 2\n    if K <= -1.5e-3:\n"
+    assert pt.switches(code, ["u", "K"]) == {"u": [0.125, 3.0], "K": [-1.5e-3]}
+
+
+def test_the_stationary_points_and_zeros_of_a_polynomial_argument_are_hard_points():
+    """(K − c(u))² − 1 with c = 1/(1 + u): its vertex K = c and zeros K = c ± 1 are found."""
+    expr = (K - 1 / (1 + u)) ** 2 - 1
+    import random
+    got = pt.polynomial_points(ARGS, expr, (u, K), random.Random(1))
+    assert got
+    for p in got[:60]:
+        c = 1 / (1 + p[0])
+        assert min(abs(p[1] - c), abs(p[1] - c - 1), abs(p[1] - c + 1)) < 1e-12
+
+
+def test_hard_points_hold_the_ends_and_the_doubles_inside_them():
+    pts = pt.hard_points(ARGS, ["u", "K"], "if (u < 0.5):", (K - u) ** 2, (u, K), "s")
+    us, ks = {p[0] for p in pts}, {p[1] for p in pts}
+    assert {1e-6, math.nextafter(1e-6, 1), 700.0, math.nextafter(700.0, 0)} <= us
+    assert {-3.0, 3.0, 0.0, 5e-324} <= ks
+    assert {0.5, math.nextafter(0.5, 0), math.nextafter(0.5, 1)} <= us
+    assert all(1e-6 <= a <= 700 and -3 <= b <= 3 for a, b in pts)
+    assert pts == pt.hard_points(ARGS, ["u", "K"], "if (u < 0.5):", (K - u) ** 2, (u, K), "s")   # seeded
+
+
+def test_the_search_climbs_to_a_narrow_peak():
+    peak = (2.0, 0.25)
+
+    def score(p, floor):
+        return 1.0 / (1e-9 + abs(math.log(p[0] / peak[0])) + abs(p[1] - peak[1]))
+    start = (1.5, 0.0)
+    best, value, tried = pt.climb(start, score(start, 0), score, ARGS, "s", 400)
+    assert value > 20 * score(start, 0) and len(tried) == pt.climb_length(400)
+
+
+def _job(name, expr, fn, args=ARGS[:1]):
+    syms = tuple(sorted(expr.free_symbols, key=lambda s: s.name))
+    return run.Job(name, "test", "test." + name, args, expr, syms, fn, fn, "")
+
+
+@pytest.fixture
+def few_points(monkeypatch):
+    monkeypatch.setattr(run, "POINTS", 1500)
+    monkeypatch.setattr(run, "CLIMB_BUDGET", 160)
+
+
+def test_a_correct_kernel_passes(few_points):
+    rep = run.audit_one(_job("e", sp.exp(-u), lambda x: math.exp(-x)))
+    assert rep["points"] >= 1500 and rep["worst_scaled"] <= 1.0 and rep["python"]["over_bound"] == 0
+    assert not run.over([rep])
+
+
+def test_a_kernel_that_cancels_fails_and_its_worst_point_is_found(few_points):
+    """1 − cos u evaluated plainly loses everything as u → 0 (true value u²/2)."""
+    rep = run.audit_one(_job("c", 1 - sp.cos(u), lambda x: 1 - math.cos(x)))
+    assert run.over([rep]) and rep["c"]["over_bound"] > 0
+    assert rep["worst_at"][0] < 1e-3
+
+
+def test_the_reference_has_digits_for_the_cancellation_near_zero(few_points):
+    """(1 − cos u)/u² at u = 1e-6 cancels 12 digits: a correct kernel (its series) must pass."""
+    def good(x):
+        return 2 * math.sin(x / 2) ** 2 / (x * x)
+    rep = run.audit_one(_job("s", (1 - sp.cos(u)) / u**2, good, (KernelArg("u", 1e-6, 3.0, log=True),)))
+    assert rep["worst_scaled"] <= 4.0, rep
