@@ -113,8 +113,9 @@ class Spec:
     # printed and derived are compared when they hold an arbitrary function
     instances: tuple[tuple[tuple[sp.Basic, sp.Basic], ...], ...] = ()
     # the printed form is an approximate number given to this many decimals ("1,2 environ"):
-    # it matches when it is the derived value rounded to them (truncation is said, not matched)
-    printed_decimals: int | None = None
+    # it matches when it is the derived value rounded to them (truncation is said, not matched);
+    # for a Tuple, one number of decimals per component
+    printed_decimals: int | tuple[int, ...] | None = None
 
     @property
     def memoir(self) -> str:

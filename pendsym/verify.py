@@ -94,9 +94,17 @@ def exactly_equal(a: sp.Expr, b: sp.Expr) -> bool:
     return sp.simplify(sp.expand(sp.expand_trig(d))) == 0
 
 
-def compare_decimal(printed: sp.Expr, derived: sp.Expr, decimals: int) -> tuple[str, str]:
-    """('match' | 'discrepancy', how) for a number printed to ``decimals`` decimals: a match when it
-    is the derived value correctly rounded; a truncation or any other value is a discrepancy."""
+def compare_decimal(printed: sp.Expr, derived: sp.Expr, decimals) -> tuple[str, str]:
+    """('match' | 'discrepancy', how) for a number printed to ``decimals`` decimals (for a Tuple, a
+    number of decimals per component): a match when each is the derived value correctly rounded;
+    a truncation or any other value is a discrepancy."""
+    if isinstance(printed, sp.Tuple):
+        places = decimals if isinstance(decimals, tuple) else (decimals,) * len(printed)
+        if not isinstance(derived, sp.Tuple) or not len(printed) == len(derived) == len(places):
+            return "discrepancy", "components differ in number"
+        verdicts = [compare_decimal(p, d, n) for p, d, n in zip(printed, derived, places)]
+        status = "match" if all(s == "match" for s, _ in verdicts) else "discrepancy"
+        return status, "; ".join(f"component {i + 1}: {how}" for i, (_, how) in enumerate(verdicts))
     with mp.workdps(50):
         exact = mp.mpf(sp.N(derived, 60))
         shown = mp.mpf(sp.N(printed, 60))

@@ -59,3 +59,11 @@ def test_a_printed_decimal_matches_only_when_correctly_rounded():
     assert status == "discrepancy" and "not the derived one" in how
     status, _ = verify.compare_decimal(sp.Rational(-12, 10), -root, 1)
     assert status == "match"
+
+
+def test_printed_decimals_per_component_of_a_tuple():
+    derived = sp.Tuple(sp.Float("4.49340945790906", 30), sp.Float("32.7324", 30), 36)
+    status, how = verify.compare_decimal(sp.Tuple(sp.Rational(449, 100), sp.Rational(327, 10), 36), derived, (2, 1, 0))
+    assert status == "match" and how.count("correctly rounded") == 3
+    status, _ = verify.compare_decimal(sp.Tuple(sp.Rational(449, 100), sp.Rational(328, 10), 36), derived, (2, 1, 0))
+    assert status == "discrepancy"
