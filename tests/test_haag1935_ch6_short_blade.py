@@ -176,7 +176,7 @@ def test_bounds_of_n70_are_positive_on_a_blade():
 def test_every_result_of_chapter_six_has_a_heading():
     from derivations.haag1935 import MEMOIR
     ids = {spec.id for spec in ch6_short_blade.specs()}
-    headed = {i for heading in MEMOIR.report_headings() if heading.title.startswith("Chapter VI") for i in heading.ids}
+    headed = {i for heading in MEMOIR.report_headings() if heading.title.startswith("Chapter VI.") for i in heading.ids}
     assert headed == ids and len(ids) == len(ch6_short_blade.specs())
 
 

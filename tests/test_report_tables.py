@@ -34,8 +34,11 @@ def test_the_discrepancy_table_shows_orders_or_residuals(results, reports):
         rows = _rows(tex) if disc else []
         assert len(rows) == len(disc), memoir
         for rec in disc:
-            (row,) = [row for row in rows if rec["id"].replace("_", r"\_") in row[0].replace(r".\allowbreak ", ".")]
+            cell = rec["id"].replace("_", r"\_") + "}"          # the whole id (eq346.G2 is not eq346.G2_x)
+            (row,) = [row for row in rows if cell in row[0].replace(r".\allowbreak ", ".")]
             derived, printed = row[1], row[2]
+            if rec["evidence"]["kind"] == "chain":    # judged through the Result it feeds (test_generated's list)
+                continue
             for cell in (derived, printed):
                 assert cell not in ("--", "–", "-", ""), (rec["id"], row)
             ev = rec["evidence"]

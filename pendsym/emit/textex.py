@@ -37,7 +37,7 @@ MATH_CHARS = {
     "Γ": r"\Gamma", "Δ": r"\Delta", "Θ": r"\Theta", "Λ": r"\Lambda", "Ξ": r"\Xi", "Π": r"\Pi",
     "Σ": r"\Sigma", "Υ": r"\Upsilon", "Φ": r"\Phi", "Ψ": r"\Psi", "Ω": r"\Omega",
     # letter-like
-    "ħ": r"\hbar", "ℏ": r"\hbar", "ℓ": r"\ell", "𝕄": r"\mathbb{M}", "ℝ": r"\mathbb{R}", "ℕ": r"\mathbb{N}",
+    "ħ": r"\hbar", "ℏ": r"\hbar", "ℓ": r"\ell", "𝕄": r"\mathbb{M}", "𝕋": r"\mathbb{T}", "ℝ": r"\mathbb{R}", "ℕ": r"\mathbb{N}",
     "ℤ": r"\mathbb{Z}", "ℂ": r"\mathbb{C}", "∂": r"\partial", "∇": r"\nabla",
     # primes
     "′": "'", "″": "''", "‴": "'''",

@@ -26,8 +26,8 @@ from ..symbols import Fn
 
 NONLINEAR_TRUTH = ("pendsym.nonlinear_blade: the principal periodic oscillation of the rigid pendulum on the exact "
                    "large-deflection blade (collocation on the quarter period, 30 digits), T(θ0)/T_lin − 1")
-AMPLITUDES = ("0.005", "0.02")          # θ0 (radians): three points in geometric progression
-ORDER_POINTS = 3
+AMPLITUDES = ("0.005", "0.02")          # θ0 (radians): four points in geometric progression
+ORDER_POINTS = 4
 # the blade and pendulum of the order checks: the uniform blade (the cheapest to integrate: 1/M has no
 # singularity to limit odefun's steps) under the short pendulum, where the blade matters most
 CASE = ("uniform", "compact")
@@ -174,7 +174,7 @@ def alpha_order() -> checks.Order:
         env = dict(moments(ALPHA_CASE, checks.DPS), Y=_LOADS[0] * mp.mpf(p), theta=end.theta,
                    **{"lambda": profiles.as_mpf(profiles.profile(ALPHA_CASE).length)})
         return verify.value_at(expr, env)
-    return checks.Order(param="p", values=lambda level: verify.geometric("0.002", "0.05", 3), truth=truth, at=at,
+    return checks.Order(param="p", values=lambda level: verify.geometric("0.002", "0.05", 4), truth=truth, at=at,
                         expected=4, truth_desc=f"the exact elastica (pendsym.nonlinear_blade.end_state), {ALPHA_CASE} blade, "
                                    "X = 1; moments of the shot blade")
 

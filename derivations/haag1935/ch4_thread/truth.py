@@ -338,7 +338,7 @@ def isochronism_check() -> checks.Order:
 
     def at(expr, theta0):
         return verify.value_at(expr, dict(mode_env(name), theta_0=theta0))
-    return checks.Order(param="θ0", values=lambda level: [mp.mpf(x) for x in ("0.04", "0.08", "0.16")],
+    return checks.Order(param="θ0", values=lambda level: verify.geometric("0.04", "0.16", 4),
                         truth=truth, at=at, expected=4.0,
                         truth_desc=f"{THREAD}: the period of the principal periodic orbit (odefun, shooting "
                                    "on ψ0 until θ and ψ vanish together), T/T0 − 1",

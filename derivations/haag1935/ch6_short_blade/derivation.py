@@ -240,14 +240,14 @@ def dT_223(deps) -> sp.Expr:
 
 # ---------------------------------------------------------------- n°71: (227)–(228)
 def focal_ratio() -> sp.Expr:
-    """FB̄/F'B̄ = (b − a − z)/(b − a − z'): the foci at AF = a + z, AF' = a + z' (n°7), B at AB = b."""
+    """FB/F'B = (b − a − z)/(b − a − z'): the foci at AF = a + z, AF' = a + z' (n°7), B at AB = b."""
     from ..symbols import b
     return (b - a - z) / (b - a - zp)
 
 
 def amplitude_ratio(eq: int):
     """A'/A = 1/(A/A') of (69) (eq = 69, static release) or (73) (eq = 73, blow), a1 = −w_λ (41), with the
-    factor FB̄/F'B̄ kept and the rest (free of b) at its leading order in λ/a, z, z' of (214), (215)."""
+    factor FB/F'B kept and the rest (free of b) at its leading order in λ/a, z, z' of (214), (215)."""
     def derive(deps):
         rest = sp.simplify(1 / d(deps, eq, "ratio") / focal_ratio())
         rest = rest.subs(a1_symbol(), d(deps, 41, "a1")).subs({z: d(deps, 214, "z"), zp: d(deps, 215, "zp")},

@@ -184,7 +184,7 @@ READ_222 = Reading("dT/T = α'(1 − …) + α(λ/a)(…) − βG_2/a", "transcr
                    "the OCR", certain=False)
 READ_223 = Reading("−(β/2)(U_1 + U_2/u)", "transcribed as shown: G_2 = λ(U_1² + U_2/u)/2 (235) gives U_1²; the "
                    "exponent may be lost in the OCR", certain=False)
-READ_BARS = Reading("FB̄/F'B̄ (overlined)", "algebraic distances: FB̄ = b − a − z, F'B̄ = b − a − z'")
+READ_BARS = Reading("FB/F'B (overlined)", "algebraic distances: FB = b − a − z, F'B = b − a − z'")
 
 
 def dl_thread():

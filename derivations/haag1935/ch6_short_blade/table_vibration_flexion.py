@@ -3,7 +3,7 @@ of the short blade, (224)–(226), (235)–(240)."""
 from __future__ import annotations
 
 from pendsym import checks
-from pendsym.result import Spec
+from pendsym.result import Reading, Spec
 
 from ..ch1_shape.printed import eq87 as optimum_87
 from ..ch3_uniform.printed import T_DEFINITION
@@ -38,23 +38,23 @@ def specs() -> tuple[Spec, ...]:
              derivation.amplitude_ratio(69), deps=(rid(69, "ratio"), rid(41, "a1"), rid(214, "z"), rid(215, "zp")),
              printed=printed.ratio_227, defs=DEFINITIONS, readings=(printed.READ_BARS,),
              check=checks.All((truth_dynamics.launch_order("static", "tapered"), truth_dynamics.launch_order("static", "uniform"))),
-             note="1/(69) with a1 = −w_λ (41); FB̄/F'B̄ kept, the rest at its leading order in λ/a."),
+             note="1/(69) with a1 = −w_λ (41); FB/F'B kept, the rest at its leading order in λ/a."),
         Spec(rid(228, "ratio"), "A'/A after a blow at B", src(71, "228"), "A'/A", derivation.amplitude_ratio(73),
              deps=(rid(73, "ratio"), rid(41, "a1"), rid(214, "z"), rid(215, "zp")), printed=printed.ratio_228,
              defs=DEFINITIONS, readings=(printed.READ_BARS,),
              check=checks.All((truth_dynamics.launch_order("blow", "tapered"), truth_dynamics.launch_order("blow", "uniform"))),
-             note="1/(73) with a1 = −w_λ (41); FB̄/F'B̄ kept, the rest at its leading order in λ/a."),
+             note="1/(73) with a1 = −w_λ (41); FB/F'B kept, the rest at its leading order in λ/a."),
         Spec(rid(228, "over227"), "(228) over (227) = (l/R)√(a/β1)", src(71, None), r"\frac{(228)}{(227)}",
              derivation.ratio_228_227, deps=(rid(227, "ratio"), rid(228, "ratio")), printed=printed.ratio_228_227,
              defs=DEFINITIONS, check=checks.All((truth_dynamics.launch_ratio_order("tapered"),
                                                  truth_dynamics.launch_ratio_order("uniform")))),
         # ------------------------------------------------------------ n°73–75
-        *(Spec(rid(229, at), f"largest {label} after release from the static deviation", src(73, "229"), label,
+        *(Spec(rid(229, at), f"largest {text} after release from the static deviation", src(73, "229"), label,
                derivation.fatigue_229(at), deps=(rid(180, at),), printed=printed.fatigue_229(at), defs=DEFINITIONS,
                check=checks.All((truth_dynamics.static_launch_order("uniform", at), truth_dynamics.static_launch_order("uniform_half", at))),
                note="(180) with K = 1, 1/K' = 0 (224), the principal term at t = 0 and the parasitic one at n't = 0 "
                     "or π: the amplitudes add; distances in absolute value.")
-          for at, label in (("T0", "T'_0"), ("Tl", r"T'_\lambda"))),
+          for at, text, label in (("T0", "T'_0", "T'_0"), ("Tl", "T'_λ", r"T'_\lambda"))),
         *(Spec(rid(eq, "T0"), f"largest T'_0, B {where}", src(73, str(eq)), "T'_0", derivation.fatigue_by_attack(case),
                deps=(rid(229, "T0"), rid(67, "theta0"), rid(41, "a1")), printed=printed.fatigue_by_attack(case),
                defs=DEFINITIONS, check=checks.All(tuple(truth_dynamics.attack_order(name, attack)
@@ -95,6 +95,7 @@ def specs() -> tuple[Spec, ...]:
              check=truth.increasing("the derived derivative of sh²u/(u + sh u ch u)")),
         Spec(rid(236, "value"), "(236) at u = 4 (\"elle vaut déjà 0,993\")", src(76, None), r"(236)_{u=4}",
              derivation.value_236, deps=(rid(236, "factor"),), printed=printed.value_236, printed_decimals=3,
+             readings=(Reading("0,993", "0.993 (a decimal comma)"),),
              check=truth.number_check(truth.suppleness_factor_truth, "λ/(2uG_2) at u = 4, G_2 of (79) at K = 1 by "
                                       "quadrature on the shot uniform blade"),
              note="The value is 0.99399…: the printed 0,993 is truncated, not rounded (0,994)."),

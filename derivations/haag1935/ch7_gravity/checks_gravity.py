@@ -70,7 +70,7 @@ def inverse_eps(env):
 
 
 def suppleness(env, key, sign, p, dps):
-    """S = W'/W of the slow mode: W = mg·energy (θ = 1), W + W' = ½qᵀKq the potential (n°23, n°101 note)."""
+    """S = W'/W of the slow mode: W = mg·energy (θ = 1), W + W' = ½ q·(Kq) the potential (n°23, n°101 note)."""
     sus = truth.direct(key, sign, 0, dps)
     with mp.workdps(sus.wdps):
         q = mp.matrix([-(env["a"] + env["z'"]), 1])

@@ -143,7 +143,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(82, "S_gravity"), "S = −1 as ε → 0 (n°91)", src(91, None), "S", derivation.S_91,
              deps=(rid(82, "S"), rid(260, "K")), printed=printed.suppleness_91,
              check=both(lambda key: order(suppleness, "S = W'/W of the slow mode: W = strain energy, W + W' = "
-                                          "½qᵀKq", 1, key))),
+                                          "½ q·(Kq)", 1, key))),
         Spec(rid(285, "C"), "C of the uniform blade", src(93, "285"), "C", derivation.C_285,
              deps=(rid(158, "phi2"), rid(159, "wl")), printed=printed.C_285, check=C_values(1),
              note="C = (wλ − F4)/(wλ − F2) at K = 0 ((284), (81)); (283) itself rests on chapter II and is not built."),

@@ -13,7 +13,7 @@ Findings (the truth is the blade shot by :mod:`pendsym.blade`, no Bessel functio
 * Haag's Y_n is Neumann's (Jahnke–Emde), (π/2)Y_n(today) + (ln 2 − γ)J_n: the Wronskian 1/x he quotes and
   the end values (343) hold only under that scale (today's Y_n: 2/(πx), w_0 off by (π/2)²);
 * (346) and the line before it are wrong: n°110 takes dz/dx = 1 at x_1 where w'(λ/2) = 1 gives kx_1/(2ω²); the
-  derived G_2 = k/(8ω²D²D'²)(1/x_0² + 2x_1²DD'D_1D'_1 − D² − D'²) + 1/k + λ/2 − (kx_1/4ω²)(D_1/D + D'_1/D')
+  derived G_2 = k/(8ω²D²D'²)(1/x_0² + 2x_1²D D' D_1 D'_1 − D² − D'²) + 1/k + λ/2 − (kx_1/4ω²)(D_1/D + D'_1/D')
   agrees with the truth (the printed terms ω²/k and ½(D_1/D + D'_1/D') are not lengths);
 * the rectangular hole (321)–(333), including the long (333), agrees with the truth throughout.
 """

@@ -12,7 +12,7 @@ middle of the blade, −λ/2 ≤ s ≤ λ/2.  The steps follow the memoir:
 * n°110, (346): G_2 = ∫ w²/M ds through the integral ∫ v²/x dx of the text.
 
 **Convention.**  Haag's Y_n is the function of "Bessel and Neumann" of Jahnke–Emde, normalised by the
-Wronskian he quotes, J_1Y_0 − Y_1J_0 = 1/x: Neumann's Y_n = (π/2)·Y_n(today) + (ln 2 − γ)·J_n
+Wronskian he quotes, J_1 Y_0 − Y_1 J_0 = 1/x: Neumann's Y_n = (π/2)·Y_n(today) + (ln 2 − γ)·J_n
 (:func:`neumann_Y`).  Today's Y_n has the Wronskian 2/(πx).  Every quantity of n°107–110 is a
 combination Y(a)J(b) − J(a)Y(b), in which the J part of the admixture cancels; only the scale π/2
 matters, and it is the one the Wronskian 1/x fixes.
@@ -210,7 +210,7 @@ def middle_slope() -> sp.Expr:
 
 @functools.lru_cache(maxsize=None)
 def continuation() -> types.MappingProxyType:
-    """(339): A'', B'' from A', B' by the conditions at the middle; the determinant J_1Y_0 − Y_1J_0 at x_0
+    """(339): A'', B'' from A', B' by the conditions at the middle; the determinant J_1 Y_0 − Y_1 J_0 at x_0
     is replaced by 1/x_0 (the Wronskian, footnote of n°110), as Haag does."""
     sol = sp.solve(middle_conditions(), [A2, B2], dict=True)[0]
     out = {}
@@ -287,8 +287,8 @@ def w_end(which: str) -> sp.Expr:
 
 
 def identity_345() -> sp.Expr:
-    """(345): D_1D' − DD'_1, expanded from the definitions (338), (341), (344) and factored: it is the product of
-    the Wronskians J_1Y_0 − Y_1J_0 at x_0 and at x_1, each 1/x (footnote of n°110), hence 1/(x_0x_1)."""
+    """(345): D_1 D' − D D'_1, expanded from the definitions (338), (341), (344) and factored: it is the product of
+    the Wronskians J_1 Y_0 − Y_1 J_0 at x_0 and at x_1, each 1/x (footnote of n°110), hence 1/(x_0 x_1)."""
     D_ = Y1a * J0b - Y0b * J1a
     Dp_ = Y0a * J0b - Y0b * J0a
     D1_ = Y1a * J1b - J1a * Y1b
@@ -296,7 +296,7 @@ def identity_345() -> sp.Expr:
     product = sp.factor(sp.expand(D1_ * Dp_ - D_ * D1p_))
     wa, wb = J1a * Y0a - Y1a * J0a, J1b * Y0b - Y1b * J0b
     if sp.expand(product - wa * wb) != 0:
-        raise ValueError(f"D_1D' − DD'_1 is not the product of the Wronskians: {product}")
+        raise ValueError(f"D_1 D' − D D'_1 is not the product of the Wronskians: {product}")
     return (wa * wb).subs({J1a: (1 / x0 + Y1a * J0a) / Y0a, J1b: (1 / x1 + Y1b * J0b) / Y0b}).simplify()
 
 

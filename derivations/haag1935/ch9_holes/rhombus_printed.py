@@ -37,7 +37,7 @@ READ_OMEGA_W = Reading("ω_0, ω_λ, ω²/M (n°110)", "w_0, w_λ, w²/M: the OC
 READ_Y0 = Reading("y_0 = z_0 = … = k/(4ω²D), y'_0 = −z'_0 = … = k/(4ω²D)",
                   "transcribed as shown; (340) gives y_0 = k/(4ω²D') and y'_0 = k/(4ω²D): a prime lost on the first "
                   "(the final G_2 has 1/D² + 1/D'², as with y_0 = k/(4ω²D'))", certain=False)
-READ_346_X = Reading("2x_0² DD'D_1D'_1 in (346)",
+READ_346_X = Reading("2x_0² D D' D_1 D'_1 in (346)",
                      "transcribed as shown; Haag's own previous line with (343), (345) gives 2x_1², so x_0 may be an "
                      "OCR or printer's slip for x_1", certain=False)
 

@@ -18,7 +18,7 @@ G2_NOTE = ("Haag takes dz/dx = 1 at x_1 where w'(λ/2) = 1 gives dz/dx = kx_1/(2
 
 
 def identity_check() -> checks.Values:
-    """D_1D' − DD'_1 of the definitions, each Bessel value by mpmath, against the derived 1/(x_0x_1)."""
+    """D_1 D' − D D'_1 of the definitions, each Bessel value by mpmath, against the derived 1/(x_0 x_1)."""
     D, Dp, D1, D1p = derivation.D_symbols()
     lhs = (D1 * Dp - D * D1p).subs(dict(derivation.D_definitions()))
 
@@ -28,7 +28,7 @@ def identity_check() -> checks.Values:
             from pendsym import verify
             with mp.workdps(dps + 10):
                 yield checks.Point(f"(M0, k, λ) = ({', '.join(case)})", env, verify.value_at(lhs, env))
-    return checks.Values(truth="D_1D' − DD'_1 from its definitions (338), (341), (344), mpmath Bessel functions",
+    return checks.Values(truth="D_1 D' − D D'_1 from its definitions (338), (341), (344), mpmath Bessel functions",
                          points=points, kind="value")
 
 
@@ -53,10 +53,10 @@ def specs() -> tuple[Spec, ...]:
              lambda deps: derivation.D1_definition(), printed=printed.D1_definition, **definition),
         Spec(rid(344, "D1p"), "D'_1 = Y_0(x_0)J_1(x_1) − Y_1(x_1)J_0(x_0)", src(n109, "344"), "D'_1",
              lambda deps: derivation.D1_prime_definition(), printed=printed.D1_prime_definition, **definition),
-        Spec(rid(345, "identity"), "D_1D' − DD'_1 = 1/(x_0x_1) ((16) for the rhombus blade)", src(n109, "345"),
+        Spec(rid(345, "identity"), "D_1 D' − D D'_1 = 1/(x_0 x_1) ((16) for the rhombus blade)", src(n109, "345"),
              r"D_1D' - DD'_1", lambda deps: derivation.identity_345(), deps=(rid(339, "wronskian"),),
              printed=printed.identity_345, check=identity_check(),
-             note="Derived by expanding D_1D' − DD'_1: it is the product of the Wronskians at x_0 and x_1."),
+             note="Derived by expanding D_1 D' − D D'_1: it is the product of the Wronskians at x_0 and x_1."),
         # ---------------------------------------------------------------- n°110
         Spec(rid(346, "G2_definition"), "G_2 = ∫ w²/M ds over −λ/2 ≤ s ≤ λ/2 (gravity pendulum)", src(n110, None),
              "G_2", lambda deps: sp.Symbol("G_2"), printed=lambda: sp.Symbol("G_2"), readings=(READ_OMEGA_W,),

@@ -32,7 +32,7 @@ def wronskian_check() -> checks.All:
         for value in ("0.3", "2.5", "17", "140"):
             yield checks.Point(f"x = {value}", {"x": value}, 1 / sp.Float(value, 60))
     return checks.All((
-        checks.Proof("d/dx[x(J_1Y_0 − Y_1J_0)] = 0 by Bessel's equations",
+        checks.Proof("d/dx[x(J_1 Y_0 − Y_1 J_0)] = 0 by Bessel's equations",
                      holds=lambda d: sp.simplify(sp.diff(derivation.x * d, derivation.x)) == 0),
         checks.Values(truth="1/x, with J_n, Y_n(today) of mpmath and Neumann's Y_n = (π/2)Y_n + (ln 2 − γ)J_n",
                       points=points, kind="value")))
@@ -42,7 +42,7 @@ def today_fails() -> checks.Values:
     def points(level, dps):
         for value in ("0.3", "2.5", "17"):
             yield checks.Point(f"x = {value}", {"x": value}, 1 / sp.Float(value, 60), denom=1 / sp.Float(value, 60))
-    return checks.Values(truth="1/x against today's J_1Y_0 − Y_1J_0 = 2/(πx) (mpmath)", points=points,
+    return checks.Values(truth="1/x against today's J_1 Y_0 − Y_1 J_0 = 2/(πx) (mpmath)", points=points,
                          fails_by="0.3", kind="value")
 
 
@@ -65,7 +65,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(336, "v"), "v = x[AJ_1(x) + BY_1(x)]", src(n107, "336"), "v",
              lambda deps: derivation.general_solution(), deps=(rid(335, "bessel"),), printed=printed.general_solution,
              readings=(READ_Y,), check=checks.Proof("the form satisfies (335) identically", holds=solves_335),
-             note="dsolve gives x[C_1J_1 + C_2Y_1(today)]; in Neumann's basis the constants are renamed linearly."),
+             note="dsolve gives x[C_1 J_1 + C_2 Y_1 (today)]; in Neumann's basis the constants are renamed linearly."),
         Spec(rid(336, "dvdx"), "dv/dx = x[AJ_0(x) + BY_0(x)]", src(n107, None), r"\frac{dv}{dx}",
              lambda deps: derivation.slope_in_x(), deps=(rid(336, "v"),), printed=printed.slope_in_x,
              check=exact("d/dx of (336) by SymPy's Bessel derivatives", printed.slope_in_x)),
