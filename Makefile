@@ -20,7 +20,7 @@ lock:
 	  build/lockvenv/bin/pip freeze --exclude-editable --disable-pip-version-check; } > constraints.txt
 
 derive: $(STAMP)
-	$(BIN)/pendsym derive --out generated
+	PYTHONHASHSEED=0 $(BIN)/pendsym derive --out generated
 
 # over the cores, a test file per worker (so that a module's fixtures are built once)
 test: $(STAMP)

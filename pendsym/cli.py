@@ -250,7 +250,18 @@ def cmd_scene(args) -> int:
     return 0
 
 
+def _fixed_hash_seed() -> None:
+    """Run the program under Python's string-hash seed 0: some SymPy results (the order of terms an
+    integral comes back in) follow the order of sets of strings, so a derive is byte-reproducible
+    only under one seed.  Re-executes the same command when the seed is not 0."""
+    if os.environ.get("PYTHONHASHSEED") != "0":
+        os.environ["PYTHONHASHSEED"] = "0"
+        os.execv(sys.executable, [sys.executable, "-m", "pendsym.cli", *sys.argv[1:]])
+
+
 def main(argv=None) -> int:
+    if argv is None:
+        _fixed_hash_seed()
     argv = sys.argv[1:] if argv is None else argv
     try:
         if not argv:

@@ -171,3 +171,10 @@ def test_no_raw_markup_outside_math_in_the_reports(generated):
             assert i < 0, (tex.name, body[max(0, i - 80):i + 40])
         i = re.search(r"(?<!\\)_", body)
         assert i is None, (tex.name, body[max(0, i.start() - 80):i.start() + 40])
+
+
+def test_a_primed_subscripted_base_is_braced_before_a_power():
+    from pendsym.emit.mathtex import ReportLatex
+    y0, z = sp.Symbol("y'_0"), sp.Symbol("z'")
+    assert ReportLatex().doprint(y0**2) == "{y'_{0}}^{2}"       # y'_{0}^{2} is a double superscript in TeX
+    assert ReportLatex().doprint(z**2) == "z'^{2}"

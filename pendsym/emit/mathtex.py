@@ -58,6 +58,13 @@ class ReportLatex(LatexPrinter):
             return super()._deal_with_super_sub(string, style)
         return r"\mathbf{" + mapped + "}" if style == "bold" else mapped
 
+    def parenthesize_super(self, s: str) -> str:
+        """A base with a prime and a subscript (y'_{0}) is braced before a power: TeX's prime is a
+        superscript, and y'_{0}^{2} would be a double one."""
+        if "'" in s and "_" in s and "^" not in s:
+            return "{" + s + "}"
+        return super().parenthesize_super(s)
+
     def add_terms(self, expr: sp.Add) -> list[tuple[str, sp.Basic, str]]:
         """The terms of a sum as _print_Add prints them: (sign, term without it, LaTeX)."""
         out = []
