@@ -1,0 +1,150 @@
+"""Clamping errors of the exact blade: the tilted equilibrium and the small oscillations about it.
+
+The blade and the pendulum of :mod:`pendsym.nonlinear_blade` (exact large-deflection elastica, rigid
+pendulum m, a, R), with two assembly errors:
+
+- the clamp's tangent Ox makes the angle i with the vertical (the vertical OV is at −i from Ox), so that
+  in the blade's axes gravity is g(cos i, −sin i);
+- the centre of gravity G is off the tangent AT at the blade's end by the angle i': x_G = α + a cos(θ + i'),
+  y_G = β + a sin(θ + i').
+
+Everything is written in the blade's axes, where the clamp stays φ(0) = 0, so the elastica
+(:func:`pendsym.nonlinear_blade.end_state`) is unchanged; only the pendulum's equations change:
+
+    ẍ_G = g(cos i − X),    ÿ_G = −g(sin i + Y),    R²θ̈ = g(−N + a(Y cos(θ + i') − X sin(θ + i'))).
+
+:func:`equilibrium` solves the statics exactly (X = cos i, Y = −sin i, and the clamping couple c0 that
+makes the blade's end couple N equal the pendulum's moment), by mpmath's ``findroot``.
+:func:`tilted` linearises the exact equations about that equilibrium in the loads
+(X, Y, c0) — the positions follow by the elastica's variational equations — and solves the 3 × 3
+generalised eigenproblem B q = Ω A q (mpmath ``eig``); the principal mode is the eigenvalue nearest the
+untilted principal n² of :mod:`pendsym.suspension`.  Its period 2π/√Ω is the limit θ0 → 0 of the period
+of the tilted blade: no expansion in i, i'.  At i = i' = 0 it is the linear period of the straight blade
+(the first row of A then vanishes: the axial mode is infinitely stiff).  Quantities in SI units, m = 1.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath as mp
+import sympy as sp
+
+from . import blade as linear_blade
+from . import cache, keys, nonlinear_blade, suspension
+
+VERSION = "1"        # bump when the meaning of a cached value changes
+
+
+@dataclass(frozen=True)
+class Equilibrium:
+    """The exact tilted equilibrium: the loads (X, Y, c0), the blade's end (α, β, θ, N) and the 4×3
+    Jacobian ∂(α, β, θ, N)/∂(X, Y, c0) there."""
+
+    X: mp.mpf
+    Y: mp.mpf
+    c0: mp.mpf
+    alpha: mp.mpf
+    beta: mp.mpf
+    theta: mp.mpf
+    N: mp.mpf
+    jacobian: tuple
+
+
+def _moment_mismatch(end, X, Y, a, i_prime):
+    """N − a(Y cos(θ + i') − X sin(θ + i')): the moment about G that the statics must cancel."""
+    th = end.theta + i_prime
+    return end.N - a * (Y * mp.cos(th) - X * mp.sin(th))
+
+
+def equilibrium(blade: linear_blade.Blade, a, g, i, i_prime, dps: int = 30) -> Equilibrium:
+    """The equilibrium with the clamp tilted by i and G off the tangent by i' (n°31–32), exactly.
+
+    The pendulum at rest: X = cos i, Y = −sin i (the force on G balances its weight), and c0 solves
+    N(c0) = a(Y cos(θ(c0) + i') − X sin(θ(c0) + i')) (the moment about G), Newton from c0 = 0 with the
+    elastica's variation in c0 as derivative.
+    """
+    wdps = nonlinear_blade.working_dps(blade, dps)
+    with mp.workdps(wdps):
+        a, g, i, i_prime = (suspension.number(x) for x in (a, g, i, i_prime))
+        X, Y = mp.cos(i), -mp.sin(i)
+        memo = {}
+
+        def state(c0):
+            if c0 not in memo:
+                memo.clear()
+                memo[c0] = nonlinear_blade.end_state(blade, X, Y, c0, wdps, variations=True)
+            return memo[c0]
+
+        def mismatch(c0):
+            return _moment_mismatch(state(c0), X, Y, a, i_prime)
+
+        def slope(c0):
+            end = state(c0)
+            th = end.theta + i_prime
+            return end.jacobian[3][2] + a * (Y * mp.sin(th) + X * mp.cos(th)) * end.jacobian[2][2]
+
+        tol = mp.mpf(10) ** (-(dps + 6))
+        c0 = mp.findroot(mismatch, mp.mpf(0), df=slope, solver="newton", tol=tol, verify=False, maxsteps=50)
+        end = state(c0)
+        if not abs(mismatch(c0)) < mp.mpf(10) ** (-(dps + 3)) * (1 + abs(a)):
+            raise nonlinear_blade.NoConvergence(f"tilted equilibrium: moment residual {mp.nstr(mismatch(c0), 5)}")
+        return Equilibrium(X, Y, c0, end.alpha, end.beta, end.theta, end.N, end.jacobian)
+
+
+def linearised_matrices(eq: Equilibrium, a, R, g, i_prime):
+    """(A, B) of the linearisation about ``eq``: loads δL = (δX, δY, δc0) e^{iωt}, B δL = ω² A δL, from
+
+        δα̈ − a sin ϑ δθ̈ + g δX = 0,   δβ̈ + a cos ϑ δθ̈ + g δY = 0,
+        R² δθ̈ + g(δN − a(cos ϑ δY − sin ϑ δX) + a(Y sin ϑ + X cos ϑ) δθ) = 0,   ϑ = θ + i',
+
+    with δ(α, β, θ, N) = Jacobian · δL."""
+    Jal, Jbe, Jth, JN = (mp.matrix([list(row)]) for row in eq.jacobian)
+    th = eq.theta + i_prime
+    sn, cs = mp.sin(th), mp.cos(th)
+    rows_A = (Jal - a * sn * Jth, Jbe + a * cs * Jth, R * R * Jth)
+    e1, e2 = mp.matrix([[1, 0, 0]]), mp.matrix([[0, 1, 0]])
+    rows_B = (g * e1, g * e2, g * (JN - a * (cs * e2 - sn * e1) + a * (eq.Y * sn + eq.X * cs) * Jth))
+    A = mp.matrix([[rows_A[r][0, c] for c in range(3)] for r in range(3)])
+    B = mp.matrix([[rows_B[r][0, c] for c in range(3)] for r in range(3)])
+    return A, B
+
+
+@dataclass(frozen=True)
+class Tilted:
+    """The exact tilted equilibrium (θ, β, the loads Y and c0, the couple N) and the period of the
+    principal small oscillation about it."""
+
+    theta: mp.mpf
+    beta: mp.mpf
+    Y: mp.mpf
+    c0: mp.mpf
+    N: mp.mpf
+    period: mp.mpf
+
+
+def _solve(blade: linear_blade.Blade, a, R, g, i, i_prime, dps: int) -> tuple:
+    sus = suspension.solve(blade, dps)
+    wdps = nonlinear_blade.working_dps(blade, dps)
+    eq = equilibrium(blade, a, g, i, i_prime, dps)
+    with mp.workdps(wdps):
+        a, R, g, i_prime = (suspension.number(x) for x in (a, R, g, i_prime))
+        n2_lin = suspension.modes(sus, a, R, g)[0].n2
+        A, B = linearised_matrices(eq, a, R, g, i_prime)
+        mu, _ = mp.eig(mp.inverse(B) * A)                  # μ = 1/Ω (μ = 0: the axial mode at i = 0)
+        omegas = [1 / m for m in mu if abs(m) > mp.mpf(10) ** (-(wdps // 2))]
+        omega2 = min(omegas, key=lambda o: abs(o - n2_lin))
+        if abs(mp.im(omega2)) > mp.mpf(10) ** (-(dps + 3)) * abs(omega2):
+            raise nonlinear_blade.NoConvergence(f"complex principal eigenvalue {omega2}")
+        period = 2 * mp.pi / mp.sqrt(mp.re(omega2))
+        return (eq.theta, eq.beta, eq.Y, eq.c0, eq.N, period)
+
+
+def tilted(blade: linear_blade.Blade, a, R, g, i, i_prime, dps: int = 30) -> Tilted:
+    """The exact tilted equilibrium and the period of the principal small oscillation about it (see the
+    module), cached by its inputs in :mod:`pendsym.cache` (pass i, i' as strings for a stable key)."""
+    key = keys.digest(("nonlinear_tilt.tilted", VERSION, keys.FORMAT, *keys.versions(),
+                       keys.file_hash(keys.module_file(__name__)),
+                       keys.file_hash(keys.module_file(nonlinear_blade.__name__)),
+                       sp.srepr(blade.length), sp.srepr(blade.M), str(a), str(R), str(g), str(i), str(i_prime),
+                       str(dps)))
+    return Tilted(*cache.memo(key, lambda: _solve(blade, a, R, g, i, i_prime, dps)))
