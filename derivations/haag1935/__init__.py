@@ -5,7 +5,7 @@ the report's headings group the Results of a chapter by equation number.
 """
 from pendsym.memoir import Memoir, Section, headings_by
 
-from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
+from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_clamping, ch2_general, ch3_uniform
 from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
 
 
@@ -23,7 +23,8 @@ CHAPTER_1 = (
     Section.of(ch1_shape, "Chapter I. Shape, fatigue, suppleness, centre of flexion, fork (77)–(87)"),
 )
 CHAPTER_2 = (
-    Section.of(ch2_general, "Chapter II. General theory of perturbations and the isochronism error (88)–(114)"),
+    Section.of(ch2_general, "Chapter II. General theory of perturbations and the isochronism error (88)–(115)"),
+    Section.of(ch2_clamping, "Chapter II. Clamping errors and their interaction with the isochronism error (116)–(134)"),
 )
 CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
@@ -48,7 +49,8 @@ HEADINGS = (
     ("Chapter I. Principal oscillation, launching, shape, fatigue, suppleness, fork (64)–(87)",
      _eqs(64, 87, CHAPTER_1)),
     ("Chapter II. General theory of perturbations: f, ΔX, ΔY, ΔN (88)–(105)", _eqs(88, 105, CHAPTER_2)),
-    ("Chapter II. The isochronism error and the classical formula (106)–(114)", _eqs(106, 114, CHAPTER_2)),
+    ("Chapter II. The isochronism error and the classical formula (106)–(115)", _eqs(106, 115, CHAPTER_2)),
+    ("Chapter II. Clamping errors (116)–(134)", _eqs(116, 134, CHAPTER_2)),
     ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, CHAPTER_3)),
     ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, CHAPTER_3)),
     ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, CHAPTER_3)),

@@ -69,3 +69,16 @@ def in_F(expr: sp.Expr, max_n: int = 6) -> sp.Expr:
     if rest:
         raise ValueError(f"not a combination of the F_n: {rest}")
     return sp.expand(out.xreplace({x: Fn(int(x.args[1])) for x in out.atoms(L)}))
+
+
+# ---------------------------------------------------------------- clamping errors (n°31–35)
+i_clamp = sp.Symbol("i", real=True)               # angle (OV, Ox) of the clamp's tangent with the vertical (n°31)
+i_prime = sp.Symbol("i'", real=True)              # angle (AT, AG): G off the tangent at A (n°31)
+j_eq = sp.Symbol("j", real=True)                  # θ at the equilibrium (117)
+h_beta = sp.Symbol("h_beta", real=True)           # β at the equilibrium: Haag's h of (117) (renamed: (127) has another h)
+j_prime = sp.Symbol("j'", real=True)              # angle of the tangent AT with the vertical at equilibrium (118)
+theta1 = sp.Symbol("theta_1", real=True)          # θ − j (119)
+beta1_var = sp.Symbol("tilde_beta_1", real=True)  # β − h (119): Haag's β1, not the β1 of (22)
+h_127 = sp.Symbol("h", real=True)                 # ½(K∂H2/∂Y + ∂H2/∂θ) at Y = −i, θ = j (127)
+h_132 = sp.Symbol("h'", real=True)                # (K²∂²/∂Y² + 2K∂²/∂Y∂θ + ∂²/∂θ²)H at Y = −i, θ = j (132)
+Q1 = sp.Symbol("Q_1", real=True)                  # (133)

@@ -1,0 +1,120 @@
+"""Haag 1935, chapter II, n°31–35: the independent truth.
+
+- The exact tilted equilibrium and the period of the principal small oscillation about it
+  (:mod:`pendsym.nonlinear_tilt`: the large-deflection elastica under the exact statics with gravity at the
+  angle i from the clamp's tangent and G at the angle i' from the tangent AT; the linearisation about that
+  equilibrium, a 3 × 3 eigenproblem in the loads), at 30 digits, confirmed at 45.
+  The equilibrium formulas (117)–(118) are first-order: the residual against the exact θ, β must fall like
+  i³ (the equilibrium is odd in (i, i') by the mirror symmetry).  The change of period (134) is a quadratic
+  form in i, i', j: the residual of T(i, i')/T(0, 0) − 1 − Q1/Q must fall like i⁴ (the period is even).
+  i' = RATIO·i along the sequence, so that both errors and their product are exercised.
+- (116): the exact trigonometric terms of the tilted (4)–(6) at a point scaled by p: residual O(p³).
+
+The formulas take K, z, z' of the linear modes, F2 and the moments J(p, q) (for h (127) and h' (132)) of the
+shot blade, and vλ, wλ, β1 of the shot blade (:mod:`..ch2_general.truth`).
+
+Cost: one tilted solve (equilibrium by Newton on the exact elastica, then one Jacobian) is about 2.3 s at
+30 digits on the uniform blade; the checks share the four points of the sequence and one 45-digit
+confirmation, cached by :func:`pendsym.nonlinear_tilt.tilted`.
+"""
+from __future__ import annotations
+
+import mpmath as mp
+import sympy as sp
+
+from pendsym import checks, nonlinear_tilt, verify
+from .. import profiles
+from ..ch2_general import truth as general_truth
+from . import derivation
+
+CASE = ("uniform", "compact")           # as chapter II's other nonlinear checks
+RATIO = mp.mpf("-0.6")                  # i' = RATIO·i
+SEQUENCE = checks.Geometric("0.0005", "0.004")
+TILT_TRUTH = ("pendsym.nonlinear_tilt: the exact tilted equilibrium of the large-deflection blade and the "
+              "principal small oscillation about it (eigenproblem of the exact linearisation), 30 digits")
+
+
+def _tilted(i, dps):
+    name, pend = CASE
+    a, R, g = profiles.PENDULUMS[pend]
+    i = mp.mpf(i)
+    return nonlinear_tilt.tilted(profiles.profile(name), a, R, g, mp.nstr(i, 40), mp.nstr(RATIO * i, 40), dps)
+
+
+def env_at(i) -> dict:
+    """The formulas' inputs at the point i (i' = RATIO·i): the blade, the modes, the moments, j of (117)
+    (derived) and h, h' of (127), (132) from the moments."""
+    name, pend = CASE
+    dps = checks.DPS
+    env = dict(general_truth.blade_env(name, pend, dps))
+    env.update(profiles.shot_env(name, dps))
+    env.update(general_truth.moments(name, dps))           # J(p, q), by the applied function
+    i = mp.mpf(i)
+    env.update({"i": i, "i'": RATIO * i, "a_1": -env["w_lambda"]})
+    env["j"] = verify.value_at(derivation.eq117_j(), env)
+    env["h"] = verify.value_at(derivation.eq127(), env)
+    env["h'"] = verify.value_at(derivation.eq132(), env)
+    return env
+
+
+def _exact(quantity: str):
+    def truth(i, dps):
+        st = _tilted(i, dps)
+        with mp.workdps(dps + 10):
+            if quantity == "period":
+                name, pend = CASE
+                T0 = nonlinear_tilt.tilted(profiles.profile(name), *profiles.PENDULUMS[pend], "0", "0", dps).period
+                return st.period / T0 - 1
+            if quantity == "j'":
+                return st.theta + mp.mpf(i)
+            return getattr(st, quantity)
+    return truth
+
+
+def order(quantity: str, expected: int, pick=None, over_Q: bool = False) -> checks.Order:
+    """The form (component ``pick`` of a Tuple; divided by Q = K(z − z') (45) with ``over_Q``) at i against
+    the exact tilted blade's ``quantity``: θ, β, j' (θ + i), Y, N, or period (T/T0 − 1)."""
+    def at(expr, i):
+        form = expr[pick] if pick is not None else expr
+        env = env_at(i)
+        if quantity == "N" and form.has(sp.Symbol("theta", real=True)):
+            env = dict(env, theta=_tilted(i, checks.DPS).theta)
+        value = verify.value_at(form, env)
+        return value / (env["K"] * (env["z"] - env["z'"])) if over_Q else value
+    name, pend = CASE
+    return checks.Order(param="i", values=SEQUENCE, truth=_exact(quantity), at=at, expected=expected,
+                        truth_desc=f"{TILT_TRUTH}; {name} blade, {pend} pendulum, i' = {mp.nstr(RATIO, 3)}i",
+                        params=(("blade", name), ("pendulum", pend), ("i'/i", mp.nstr(RATIO, 3))))
+
+
+# ---------------------------------------------------------------- (116): the exact terms
+_POINT = {"a": mp.mpf("0.7"), "g": mp.mpf("1"), "theta": mp.mpf("0.9"), "theta'": mp.mpf("-1.3"),
+          "theta''": mp.mpf("0.6"), "X": mp.mpf("1.1"), "Y": mp.mpf("0.35"), "i": mp.mpf("0.8"),
+          "i'": mp.mpf("-0.5")}
+
+
+def _scaled(p) -> dict:
+    return dict(_POINT, i=_POINT["i"] * p, **{"i'": _POINT["i'"] * p})
+
+
+def _errors_exact(component: int, env: dict):
+    a, g, th, thd, thdd, X, Y = (env[k] for k in ("a", "g", "theta", "theta'", "theta''", "X", "Y"))
+    i, ip = env["i"], env["i'"]
+    if component == 0:   # ε1 = cos i − 1 − (ẍ_G(i') − ẍ_G(0))/g
+        return mp.cos(i) - 1 + a / g * (thdd * (mp.sin(th + ip) - mp.sin(th)) + thd**2 * (mp.cos(th + ip) - mp.cos(th)))
+    if component == 1:   # ε2 = −sin i − (ÿ_G(i') − ÿ_G(0))/g
+        return -mp.sin(i) - a / g * (thdd * (mp.cos(th + ip) - mp.cos(th)) - thd**2 * (mp.sin(th + ip) - mp.sin(th)))
+    return a * (Y * mp.cos(th + ip) - X * mp.sin(th + ip)) - a * (Y * mp.cos(th) - X * mp.sin(th))
+
+
+def errors_order(component: int) -> checks.Order:
+    """(116), one component, against the exact difference of the tilted and untilted (4)–(6): O(p³)."""
+    def truth(p, dps):
+        with mp.workdps(dps + 10):
+            return _errors_exact(component, _scaled(mp.mpf(p)))
+
+    def at(expr, p):
+        return verify.value_at(expr[component], _scaled(mp.mpf(p)))
+    return checks.Order(param="p", values=checks.Geometric("0.0005", "0.02"), truth=truth, at=at, expected=3,
+                        truth_desc="the exact tilted (4)–(6) minus the untilted, with mpmath's sin and cos, at a "
+                                   "point where i, i' are scaled by p")
