@@ -26,12 +26,11 @@ import functools
 import sympy as sp
 
 from .. import ch1_model
-from ..ch2_common import (H_moments, J, Y_ddot, Y_dot, alpha_ddot, dX, eps1, eps2, eps3, eps_lambda, h_127, h_132,
+from ..ch2_common import (H_moments, J, Y_ddot, beta1_var, Y_dot, alpha_ddot, dX, eps1, eps2, eps3, eps_lambda, h_127, h_132,
                           h_beta, i_clamp, i_prime, in_F, j_eq, psi_s, theta0, theta1)
 from ..ch2_general import derivation as general
-from ..symbols import (Fn, K, N, R, X, Y, a, a1, beta, beta1, beta_ddot, g, n_squared, theta, theta_ddot, theta_dot,
+from ..symbols import (Fn, K, N, R, X, Y, a, a1, beta, beta_ddot, g, n_squared, theta, theta_ddot, theta_dot,
                        varphi1_s, vl, w0, wl, z, zp)
-from ..ch2_common import beta1_var
 
 delta = sp.Symbol("delta", positive=True)      # order of i, i', j
 tau = sp.Symbol("tau", positive=True)          # order of θ1 (and its derivatives)
