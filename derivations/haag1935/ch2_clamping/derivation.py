@@ -26,8 +26,8 @@ import functools
 import sympy as sp
 
 from .. import ch1_model
-from ..ch2_common import (H_moments, J, Y_ddot, beta1_var, Y_dot, alpha_ddot, dX, eps1, eps2, eps3, eps_lambda, h_127, h_132,
-                          h_beta, i_clamp, i_prime, in_F, j_eq, psi_s, theta0, theta1)
+from ..ch2_common import (H_moments, J, Y_ddot, Y_dot, alpha_ddot, beta1_var, dX, eps1, eps2, eps3, eps_lambda,
+                          h_127, h_132, h_beta, i_clamp, i_prime, in_F, j_eq, psi_s, theta0, theta1)
 from ..ch2_general import derivation as general
 from ..symbols import (Fn, K, N, R, X, Y, a, a1, beta, beta_ddot, g, n_squared, theta, theta_ddot, theta_dot,
                        varphi1_s, vl, w0, wl, z, zp)

@@ -67,7 +67,8 @@ def specs() -> tuple[Spec, ...]:
              check=checks.Proof("(23) at (h + β̃1, j + θ1) with (117), (121), (35)", _equals(printed.eq122()),
                                 truth=EXACT)),
         # ---------------------------------------------------------------- n°34
-        Spec(rid(123, "eps12"), "θε1 and ε2, quadratic in i, j", src(34, "123"), r"(\theta\varepsilon_1, \varepsilon_2)",
+        Spec(rid(123, "eps12"), "θε1 and ε2, quadratic in i, j", src(34, "123"),
+             r"(\theta\varepsilon_1, \varepsilon_2)",
              step(derivation.eq123), printed=printed.eq123, check=THROUGH_PERIOD,
              note="(116) at θ = j + θ1, Y = Kθ1 − i, θ'' = −n²θ1 (n²/g = −K/z'), linear in θ1, quadratic in i, i', j."),
         Spec(rid(124, "eps3"), "ε3 = (aθ1/2)[(1 − K)(i'² + 2i'j) + 2ii'] − ai'ΔX", src(34, "124"), r"\varepsilon_3",
@@ -80,7 +81,8 @@ def specs() -> tuple[Spec, ...]:
                                 truth=EXACT)),
         Spec(rid(127, "h"), "h = ½(K∂H2/∂Y + ∂H2/∂θ) at Y = −i, θ = j", src(34, "127"), "h", step(derivation.eq127),
              printed=printed.eq127, readings=(READ_H_TWICE,), check=checks.Definition(), definition=True),
-        Spec(rid(128, "eps1_H2"), "ε1·(126), quadratic part", src(34, "128"), r"\tfrac12\varepsilon_1(K\partial_Y + \partial_\theta)H_2",
+        Spec(rid(128, "eps1_H2"), "ε1·(126), quadratic part", src(34, "128"),
+             r"\tfrac12\varepsilon_1(K\partial_Y + \partial_\theta)H_2",
              step(derivation.eq128), printed=printed.eq128, check=THROUGH_PERIOD),
         Spec(rid(129, "f"), "f of the clamping errors alone", src(34, "129"), "f", step(derivation.eq129),
              printed=printed.eq129, readings=(READ_129_THETA1,), check=THROUGH_PERIOD,
@@ -107,7 +109,8 @@ def specs() -> tuple[Spec, ...]:
              note="Q1 = Kf/(2n²θ1), f = (129) + Δf (derived)."),
         Spec(rid(133, "sum"), "(129) + Δf gives f = (2Q1/K)n²θ1", src(35, None), "Q_1", step(derivation.eq133),
              printed=printed.q1_from_parts, readings=(READ_129_THETA1,), check=truth.order("period", 4, over_Q=True),
-             note="Haag's 'en ajoutant ceci à (129)': Kf/(2n²θ1) from the derived f and from the printed (129) and Δf."),
+             note="Haag's 'en ajoutant ceci à (129)': Kf/(2n²θ1) from the derived f and from the printed (129) "
+                  "and Δf."),
         Spec(rid(134, "dT"), "ΔT/T = Q1/Q", src(35, "134"), r"\frac{\Delta T}{T}", step(derivation.eq134),
              printed=printed.eq134, defs=printed.DEFS_134, check=truth.order("period", 4), show_values=True,
              note="f/(z − z') averaged by (114) along θ1 = θ0 cos φ; Q = K(z − z') (45); (133) applied to the "

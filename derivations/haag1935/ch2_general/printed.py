@@ -12,7 +12,7 @@ from pendsym.result import Reading
 from ..ch2_common import (F_110, H_moments, Q, Qp, Y_ddot, Y_dot, alpha_ddot, dN, dX, dY, eps1, eps2, eps3,
                           eps_bar, eps_blade, eps_lambda, theta0)
 from ..symbols import (K, M_of_s, N, X, Y, a, beta1, g, lam, n_squared, s, theta, theta_ddot, theta_dot, v,
-                       varphi1, varphi2, vl, w, z, zp)
+                       v0, varphi1, varphi2, vl, w, w0, z, zp)
 from ..symbols import Fn
 
 READ_ZP = Reading("ε' (in ε2ε' of (104) and the line before)", "z' (the OCR renders z' as ε')")
@@ -162,3 +162,75 @@ def eq114_relative():
 DEFS_111 = ((Qp, eq112().subs(F_110, eq110())), (Q, K * (z - zp)))     # applied at once (simultaneous)
 DEFS_112 = ((F_110, eq110()),)
 DEF_EPS1 = ((eps1, eq106()[0] / g),)
+
+
+# ---------------------------------------------------------------- n°27: (95)–(100), Haag's variation of constants
+READ_98_W = Reading("A = −(1/w0)∫ε'w' ds = ε0 − εw'/w0 + … in (98) (ω for w)",
+                    "A = −(1/w0)∫ε'w ds = ε0 − εw/w0 + (1/w0)∫εφ2 ds: the variation of constants of y'' − y/M = ε' "
+                    "gives A' = −ε'w/w0 (the primes on w are the OCR's)", certain=False)
+READ_97_Y = Reading("y = Mx' (n°27)", "a new function y(s), not the ordinate y(s) of the blade (3)")
+
+
+def _variation():
+    from . import variation          # (kept local: variation.py is the derivation of these steps)
+    return variation
+
+
+def eq95():
+    vr = _variation()
+    return vr.y_f(s).diff(s) - vr.eps_f(s) + dY
+
+
+def eq96():
+    return M_of_s(s) * _variation().eps_f(s).diff(s)
+
+
+def eq98_integrals():
+    vr = _variation()
+    sg, ef = vr.sigma, vr.eps_f
+    return sp.Tuple(-1 / w0 * sp.Integral(ef(sg).diff(sg) * w(sg), (sg, 0, s)),
+                    1 / w0 * sp.Integral(ef(sg).diff(sg) * v(sg), (sg, 0, s)))
+
+
+def eq98():
+    vr = _variation()
+    sg, ef = vr.sigma, vr.eps_f
+    return sp.Tuple(vr.eps0 - ef(s) * w(s) / w0 + 1 / w0 * sp.Integral(ef(sg) * varphi2(sg), (sg, 0, s)),
+                    -vr.eps0 * v0 / w0 + ef(s) * v(s) / w0 + 1 / w0 * sp.Integral(ef(sg) * (1 - varphi1(sg)), (sg, 0, s)))
+
+
+def eq97():
+    vr = _variation()
+    A, B = eq98_integrals()
+    return A * v(s) + B * w(s) + vr.C * v(s) + vr.Cp * w(s)
+
+
+def eq99():
+    return dY - _variation().eps0
+
+
+def eq100():
+    vr = _variation()
+    return -vr.A_l + vr.B_l - vr.C + vr.Cp
+
+
+# ---------------------------------------------------------------- n°30: (113), (115)
+READ_115_EPS = Reading("β = (1 + ε)^p(1 + ε')^q − 1 (n°30)",
+                       "ε' defined by θ' = θ1'(1 + ε'), not dε/dt", certain=False)
+
+
+def eq113():
+    vr = _variation()
+    return theta0 * sp.cos(vr.phi) * (1 + vr.eps_30)
+
+
+def eq115():
+    vr = _variation()
+    n = sp.sqrt(n_squared)
+    integrand = vr.A_30 * vr.theta1_30**vr.p_30 * vr.theta1p_30**vr.q_30 * (1 + vr.beta_30 + vr.alpha_30)
+    return sp.Integral(integrand * sp.cos(vr.phi), (vr.phi, 0, 2 * sp.pi)) / (n**3 * theta0)
+
+
+def beta_30():
+    vr = _variation()
+    return vr.p_30 * vr.eps_30 + vr.q_30 * vr.eps_30p

@@ -16,6 +16,14 @@ EXACT = "symbolic proof (SymPy)"
 
 
 def specs() -> tuple[Spec, ...]:
+    """The Results of n°26–30 in the order of their equation numbers ((95)–(101) by the variation of constants,
+    (113), (115) and the remarks of n°30–31 from :mod:`.table_variation`)."""
+    from .table_variation import specs as more
+    both = _specs() + more()
+    return tuple(sorted(both, key=lambda spec: int(spec.id.split(".")[1][2:])))
+
+
+def _specs() -> tuple[Spec, ...]:
     return (
         # ---------------------------------------------------------------- n°26
         Spec(rid(88, "X"), "1 − X + ε1 = 0", src(26, "88"), "0", step(derivation.eq88), printed=printed.eq88,

@@ -202,3 +202,61 @@ def parts_on_blades():
                     yield checks.Point(f"{name}/K={K_text}", {"K": K}, truth, abs(truth)), shot, eps, None
     return OnShotBlade(truth="quadrature on the shot blade of the unreduced ∫ε'(Kφ1 + φ2) ds − ε_λ "
                              "(φ1 = 1 + v', φ2 = w'), ε(s) = (1 + 2s/λ)²", points=points)
+
+
+# ---------------------------------------------------------------- (101) by the variation of constants
+def _test_eps(lam):
+    return lambda x: (1 + 2 * x / lam) ** 2
+
+
+def direct_delta_Y(name: str, dps: int):
+    """ΔY of the boundary-value problem (93) solved directly: (Mx')' − x = ε − ΔY, x(0) = x(λ) = 0 and
+    ∫x ds = 0 (β given), for the test ε(s) = (1 + 2s/λ)²; state (x, Mx', ∫x) by mpmath's odefun, the
+    unknowns (Mx')(0) and ΔY by superposition (the problem is linear)."""
+    from pendsym import blade as linear_blade
+    bl = profiles.profile(name)
+    with mp.workdps(dps + 10):
+        lam = profiles.as_mpf(bl.length)
+        eps = _test_eps(lam)
+        pieces = [(mp.mpf(sp.Rational(a)), mp.mpf(sp.Rational(b)), sp.lambdify(bl.var, expr, modules="mpmath"))
+                  for a, b, expr in linear_blade.segments(bl)]
+
+        def end(mu0, dY, with_eps):
+            state = [mp.mpf(0), mp.mpf(mu0), mp.mpf(0)]
+            for a, b, Mf in pieces:
+                def rhs(x, u, Mf=Mf):
+                    return [u[1] / Mf(x), u[0] + (eps(x) if with_eps else 0) - dY, u[0]]
+                state = mp.odefun(rhs, a, state, tol=mp.mpf(10) ** (-(dps + 8)))(b)
+            return state[0], state[2]
+        P, U, V = end(0, 0, True), end(1, 0, False), end(0, 1, False)
+        # P + c U + d V: x(λ) = 0, ∫x = 0
+        sol = mp.lu_solve(mp.matrix([[U[0], V[0]], [U[1], V[1]]]), mp.matrix([-P[0], -P[1]]))
+        return sol[1]
+
+
+def delta_Y_direct() -> checks.Values:
+    """(101): I_1/β1 (I_1 = ∫εφ1 ds by quadrature on the shot blade) against :func:`direct_delta_Y`."""
+    def points(level, dps):
+        for name in ("uniform", "tapered"):
+            shot = profiles.shot_blade(name, dps)
+            with mp.workdps(shot.wdps):
+                eps = _test_eps(profiles.as_mpf(shot.blade.length))
+                I1 = shot.integrate(lambda x: eps(x) * shot.phi1(x))
+                yield checks.Point(name, {"I_1": I1, "beta_1": shot.beta1}, direct_delta_Y(name, dps))
+    return checks.Values(truth="the boundary-value problem (93) with ∫x ds = 0 solved directly (mpmath odefun, "
+                               "superposition), ε(s) = (1 + 2s/λ)²; I_1 by quadrature on the shot blade",
+                         points=points)
+
+
+# ---------------------------------------------------------------- footnote of n°31: (114)'s θ0⁴ term
+def next_term_false() -> checks.Values:
+    """The θ0⁴ coefficient of the simple pendulum's T/T0 − 1, (T/T0 − 1 − θ0²/16)/θ0⁴ at small θ0 from the
+    exact period (ellipk), must differ from the form's by more than half of it (a counterexample)."""
+    def points(level, dps):
+        for th in ("1e-3", "1e-4"):
+            with mp.workdps(dps + 20):
+                t0 = mp.mpf(th)
+                c4 = (rigid_relative(t0, dps + 20) - t0**2 / 16) / t0**4
+            yield checks.Point(f"θ0 = {th}", {}, c4, denom=abs(c4))
+    return checks.Values(truth="the exact period of the simple pendulum 4K(sin²(θ0/2))/n (mpmath ellipk): "
+                               "(T/T0 − 1 − θ0²/16)/θ0⁴ → 11/3072", points=points, fails_by="0.5")
