@@ -84,3 +84,52 @@ def test_every_equation_from_88_to_112_has_a_result():
     ids = {spec.id.split(".")[1] for spec in table.specs()}
     expected = {f"eq{k:03d}" for k in (*range(88, 95), *range(101, 113), 114)}
     assert expected <= ids
+
+
+# ---------------------------------------------------------------- n°27 by the variation of constants, n°30
+def test_variation_of_constants_solves_96_and_gives_101():
+    from derivations.haag1935.ch2_general import variation
+    assert variation.eq97_solves_96() == 0
+    assert sp.simplify(variation.eq101_by_constants() - derivation.Delta_Y()) == 0
+    assert sp.expand(variation.eq99() - printed.eq99()) == 0
+
+
+def test_98_with_the_ocr_primes_is_not_the_derivation():
+    """The OCR's A = −(1/w0)∫ε'w' ds (primes on w) is not the variation of constants' −(1/w0)∫ε'w ds."""
+    from derivations.haag1935.ch2_general import variation
+    sg, ef = variation.sigma, variation.eps_f
+    literal = -1 / variation.w0 * sp.Integral(ef(sg).diff(sg) * variation.w(sg).diff(sg), (sg, 0, variation.s))
+    assert sp.simplify(variation.eq98_integrals()[0] - printed.eq98_integrals()[0]) == 0
+    assert sp.simplify(variation.eq98_integrals()[0] - literal) != 0
+
+
+def test_direct_boundary_value_problem_gives_I1_over_beta1():
+    """ΔY of (93) solved directly, against ∫εφ1 ds/β1 on the shot uniform blade; and against a wrong
+    candidate (∫εφ2 ds/β1), which it must miss."""
+    from derivations.haag1935 import profiles
+    shot = profiles.shot_blade("uniform", 30)
+    with mp.workdps(shot.wdps):
+        eps = truth._test_eps(profiles.as_mpf(shot.blade.length))
+        I1 = shot.integrate(lambda x: eps(x) * shot.phi1(x))
+        I2 = shot.integrate(lambda x: eps(x) * shot.phi2(x))
+        dY = truth.direct_delta_Y("uniform", 30)
+        assert abs(dY - I1 / shot.beta1) < mp.mpf("1e-28") * abs(dY)
+        assert abs(dY - I2 / shot.beta1) > mp.mpf("1e-3") * abs(dY)
+
+
+def test_calculable_terms_and_the_pendulum_footnote():
+    from derivations.haag1935.ch2_general import variation
+    assert set(variation.nonzero_calculable()) == {0}
+    assert variation.calculable_terms(2, 1) == (0, 0, 0)          # p even, q odd: nothing calculable
+    assert variation.pendulum_next_term() == sp.Rational(-1, 384)
+    with mp.workdps(40):
+        t0 = mp.mpf("1e-4")
+        c4 = (truth.rigid_relative(t0, 40) - t0**2 / 16) / t0**4
+        assert abs(c4 - mp.mpf(11) / 3072) < mp.mpf("1e-6")       # the true coefficient is not −1/384
+
+
+def test_table_covers_88_to_115():
+    ids = {s.id.rsplit(".", 1)[0] for s in table.specs()}
+    assert {f"haag1935.eq{n:03d}" for n in range(88, 116)} <= ids
+    numbers = [int(s.id.split(".")[1][2:]) for s in table.specs()]
+    assert numbers == sorted(numbers)

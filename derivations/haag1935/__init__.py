@@ -70,15 +70,15 @@ HEADINGS = (
 MEMOIR = Memoir(
     key="haag1935",
     title=("J. Haag, Théorie de la suspension élastique des pendules (1935): chapter I, first approximation "
-           "for any M(s), eqs. (1)–(87); chapter II, n°26–30, the second approximation and the isochronism error, "
-           "eqs. (88)–(114); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
+           "for any M(s), eqs. (1)–(87); chapter II, n°26–35, the second approximation, the isochronism and "
+           "clamping errors, eqs. (88)–(134); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
            "the thread, the point pendulum and beats, eqs. (184)–(211); chapter VI, the short blade, "
            "eqs. (212)–(240); chapters VII–VIII, the gravity pendulum direct and inverted, eqs. (255)–(317); "
            "chapter IX, blades with a hole, eqs. (321)–(346)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), HEADINGS),
     # (111) and (112) are checked on the same nonlinear periods
-    affinity=(ch2_general.PERIOD_RESULTS,),
+    affinity=(ch2_general.PERIOD_RESULTS, ch2_clamping.TILT_RESULTS),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,

@@ -5,6 +5,6 @@ isochronism error.
 and its readings), :mod:`.truth` (the exact tilted equilibrium and the small oscillation about it,
 :mod:`pendsym.nonlinear_tilt`), :mod:`.table` (the Results).
 """
-from .table import specs
+from .table import TILT_RESULTS, specs
 
-__all__ = ["specs"]
+__all__ = ["specs", "TILT_RESULTS"]

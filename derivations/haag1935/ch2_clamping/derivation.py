@@ -256,6 +256,7 @@ def clamping_bracket() -> sp.Expr:
     return part(br.subs(dX, eq125()), 2, 1)        # ΔX (marked τδ in X = 1 + τδΔX) is (125)
 
 
+@functools.lru_cache(maxsize=1)
 def eq129() -> sp.Expr:
     """(129): f = −(n²/K)·(the bracket of :func:`clamping_bracket`)."""
     return sp.expand(-n_squared / K * clamping_bracket())
@@ -307,6 +308,7 @@ def eq132() -> sp.Expr:
     return sp.expand(op.subs({Y: -i_clamp, theta: j_eq}, simultaneous=True))
 
 
+@functools.lru_cache(maxsize=1)
 def eq132_delta_f() -> sp.Expr:
     """Δf of n°35: (131) and the isochronism bracket, times −n²/K, in h, h', F2."""
     return sp.expand(-n_squared / K * (eq131() + in_h(isochronism_bracket())))

@@ -1,7 +1,7 @@
 """Haag 1935, chapter II, n°31–35: the formulas (116)–(134) as printed, with their OCR readings.
 
 Haag uses the letter h twice (the equilibrium β of (117), and ½(K∂H2/∂Y + ∂H2/∂θ) at Y = −i, θ = j of (127))
-and β1 twice (the constant of (22), and β − h of (119)); they are kept apart here as h_β and β̃1.
+and β1 twice (the constant of (22), and β − h of (119)); they are kept apart here as h_β and tilde β1.
 """
 from __future__ import annotations
 
@@ -15,10 +15,16 @@ from ..symbols import Fn, K, X, Y, a, a1, beta1, g, n_squared, theta, theta_ddot
 READ_H_TWICE = Reading("h in (117) and h in (126)–(133)",
                        "two quantities: β at the equilibrium (117), written h_β here, and "
                        "½(K∂H2/∂Y + ∂H2/∂θ) at Y = −i, θ = j (127), written h")
-READ_BETA1 = Reading("β1 in (119) and (121)", "β̃1 = β − h, the new variable, not the β1 = λ + vλ − v0 of (22)")
+READ_BETA1 = Reading("β1 in (119) and (121)", "β − h, the new variable (tilde β1 in the formulas), not the β1 = λ + vλ − v0 of (22)")
 READ_129_THETA1 = Reading("(129) f = (n²/2K)[…] with no factor θ1",
                           "f = (n²/2K)[…]θ1: the factor θ1 of (123)–(128), Δf and f = (2Q1/K)n²θ1",
                           certain=False)
+READ_129_2 = Reading("− aKi'(i' + 2j) in (129)",
+                     "as printed; the derivation, and (133) as printed, need − 2aKi'(i' + 2j): a lost factor 2 "
+                     "(the OCR or the memoir)", certain=False)
+READ_DELTA_F = Reading("(2K/z')(aj + h)(ai' − aj − h) in Δf (n°35)",
+                       "as printed; the derivation, and (133) as printed, need −(2K/z')(aj + h)(ai' + aj + h): "
+                       "a lost minus sign before ai' (the OCR or the memoir)", certain=False)
 READ_J_PRIME = Reading("j' = i + j, 'l'angle que fait le pendule avec la verticale' (118)",
                        "the angle of the tangent AT (the rod's axis) with the vertical; the line AG makes j' + i'",
                        certain=False)

@@ -8,9 +8,12 @@ from pendsym.result import Spec
 from ..ch2_common import h_127, h_132
 from ..common import rid, src, step
 from . import derivation, printed, truth
-from .printed import READ_129_THETA1, READ_BETA1, READ_H_TWICE, READ_J_PRIME
+from .printed import READ_129_2, READ_129_THETA1, READ_BETA1, READ_DELTA_F, READ_H_TWICE, READ_J_PRIME
 
 PERIOD = rid(134, "dT")
+# the Results whose checks solve the same tilted blades (scheduled together)
+TILT_RESULTS = (rid(116, "first_order"), rid(117, "loads"), rid(117, "j"), rid(117, "h"), rid(118, "j_prime"),
+                rid(129, "f"), rid(132, "delta_f"), rid(133, "sum"), PERIOD)
 THROUGH_PERIOD = checks.Chain((PERIOD,))
 EXACT = "symbolic proof (SymPy)"
 DEF_H = ((h_127, printed.eq127()), (h_132, printed.eq132()))      # (127), (132) in moments
@@ -56,15 +59,15 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(120, "same_motion"), "in θ1, β1 the equations are (25), (26): θ1'' = −n²θ1", src(33, "120"),
              r"(25), (26)\ \text{in}\ (\tilde\beta_1, \theta_1)", step(derivation.eq120_residual),
              readings=(READ_BETA1,),
-             check=checks.Proof("(25), (26) plus the first-order errors at (h + β̃1, j + θ1), minus (25), (26) at "
-                                "(β̃1, θ1): (0, 0) by (117)", holds=lambda e: all(sp.simplify(x) == 0 for x in e),
+             check=checks.Proof("(25), (26) plus the first-order errors at (h + β1, j + θ1), minus (25), (26) at "
+                                "(β1, θ1), β1 of (119): (0, 0) by (117)", holds=lambda e: all(sp.simplify(x) == 0 for x in e),
                                 truth=EXACT)),
         Spec(rid(121, "beta1"), "β1 = −(a + z')θ1", src(33, "121"), r"\tilde\beta_1", step(derivation.eq121),
              printed=printed.eq121, readings=(READ_BETA1,),
              check=checks.Proof("(26) with θ1'' = −n²θ1, n² of (34), R² from (30) at z'", _equals(printed.eq121()),
                                 truth=EXACT)),
         Spec(rid(122, "Y"), "Y = Kθ1 − i", src(33, "122"), "Y", step(derivation.eq122), printed=printed.eq122,
-             check=checks.Proof("(23) at (h + β̃1, j + θ1) with (117), (121), (35)", _equals(printed.eq122()),
+             check=checks.Proof("(23) at (h + β1, j + θ1) with (117), (121), (35), β1 of (119)", _equals(printed.eq122()),
                                 truth=EXACT)),
         # ---------------------------------------------------------------- n°34
         Spec(rid(123, "eps12"), "θε1 and ε2, quadratic in i, j", src(34, "123"),
@@ -85,8 +88,8 @@ def specs() -> tuple[Spec, ...]:
              r"\tfrac12\varepsilon_1(K\partial_Y + \partial_\theta)H_2",
              step(derivation.eq128), printed=printed.eq128, check=THROUGH_PERIOD),
         Spec(rid(129, "f"), "f of the clamping errors alone", src(34, "129"), "f", step(derivation.eq129),
-             printed=printed.eq129, readings=(READ_129_THETA1,), check=THROUGH_PERIOD,
-             note="−(n²/K)·the bracket of (104) with (123)–(128). The truth judges the sum with Δf: eq133.sum."),
+             printed=printed.eq129, readings=(READ_129_THETA1, READ_129_2), check=truth.step_in_Q1("129"),
+             note="−(n²/K)·the bracket of (104) with (123)–(128); judged with the derived Δf against the truth."),
         # ---------------------------------------------------------------- n°35
         Spec(rid(130, "alpha_dd"), "α'' = n²θ1h", src(35, "130"), r"\alpha''", step(derivation.eq130),
              printed=printed.eq130, check=THROUGH_PERIOD, note="(107) along the oscillation; moments as h (127)."),
@@ -102,13 +105,15 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(132, "hp"), "h' = [K²∂²H/∂Y² + 2K∂²H/∂Y∂θ + ∂²H/∂θ²] at Y = −i, θ = j", src(35, "132"), "h'",
              step(derivation.eq132), printed=printed.eq132, check=checks.Definition(), definition=True),
         Spec(rid(132, "delta_f"), "Δf of the mutual repercussion", src(35, None), r"\Delta f",
-             step(derivation.eq132_delta_f), printed=printed.delta_f, check=THROUGH_PERIOD,
-             note="−(n²/K)[(131) + the bracket of (109) at the shifted point]."),
+             step(derivation.eq132_delta_f), printed=printed.delta_f, readings=(READ_DELTA_F,),
+             check=truth.step_in_Q1("delta_f"),
+             note="−(n²/K)[(131) + the bracket of (109) at the shifted point]; judged with the derived (129)."),
         Spec(rid(133, "Q1"), "Q1 = a(i + i' + j)²/4 − aK(i' + j)²/2 − K(ai' + aj + h)²/(2z') + i²F2/4 − h'/48",
              src(35, "133"), "Q_1", step(derivation.eq133), printed=printed.eq133, check=THROUGH_PERIOD,
              note="Q1 = Kf/(2n²θ1), f = (129) + Δf (derived)."),
         Spec(rid(133, "sum"), "(129) + Δf gives f = (2Q1/K)n²θ1", src(35, None), "Q_1", step(derivation.eq133),
-             printed=printed.q1_from_parts, readings=(READ_129_THETA1,), check=truth.order("period", 4, over_Q=True),
+             printed=printed.q1_from_parts, readings=(READ_129_THETA1, READ_129_2, READ_DELTA_F),
+             check=truth.order("period", 4, over_Q=True),
              note="Haag's 'en ajoutant ceci à (129)': Kf/(2n²θ1) from the derived f and from the printed (129) "
                   "and Δf."),
         Spec(rid(134, "dT"), "ΔT/T = Q1/Q", src(35, "134"), r"\frac{\Delta T}{T}", step(derivation.eq134),

@@ -71,20 +71,36 @@ def _exact(quantity: str):
     return truth
 
 
-def order(quantity: str, expected: int, pick=None, over_Q: bool = False) -> checks.Order:
-    """The form (component ``pick`` of a Tuple; divided by Q = K(z − z') (45) with ``over_Q``) at i against
-    the exact tilted blade's ``quantity``: θ, β, j' (θ + i), Y, N, or period (T/T0 − 1)."""
+def order(quantity: str, expected: int, pick=None, over_Q: bool = False, to_Q1=None, note: str = "") -> checks.Order:
+    """The form (component ``pick`` of a Tuple; made into Q1 by ``to_Q1``; divided by Q = K(z − z') (45) with
+    ``over_Q``) at i against the exact tilted blade's ``quantity``: θ, β, j' (θ + i), Y, N, or period
+    (T/T0 − 1)."""
     def at(expr, i):
         form = expr[pick] if pick is not None else expr
+        form = to_Q1(form) if to_Q1 is not None else form
         env = env_at(i)
         if quantity == "N" and form.has(sp.Symbol("theta", real=True)):
             env = dict(env, theta=_tilted(i, checks.DPS).theta)
         value = verify.value_at(form, env)
         return value / (env["K"] * (env["z"] - env["z'"])) if over_Q else value
     name, pend = CASE
-    return checks.Order(param="i", values=SEQUENCE, truth=_exact(quantity), at=at, expected=expected,
+    return checks.Order(param="i", values=SEQUENCE, truth=_exact(quantity), at=at, expected=expected, note=note,
                         truth_desc=f"{TILT_TRUTH}; {name} blade, {pend} pendulum, i' = {mp.nstr(RATIO, 3)}i",
                         params=(("blade", name), ("pendulum", pend), ("i'/i", mp.nstr(RATIO, 3))))
+
+
+def step_in_Q1(part: str) -> checks.Order:
+    """A step of f judged alone by the truth: Q1 = Kf/(2n²θ1) with f = the form + the derived other part
+    (``part`` "129": the form is (129), Δf derived; "delta_f": the form is Δf, (129) derived), over Q."""
+    from ..ch2_common import theta1
+    from ..symbols import K, n_squared
+    other = derivation.eq132_delta_f() if part == "129" else derivation.eq129()
+
+    def to_Q1(form):
+        return sp.cancel(sp.expand(K * (form + other) / (2 * n_squared * theta1)))
+    what = "Δf" if part == "129" else "(129)"
+    return order("period", 4, over_Q=True, to_Q1=to_Q1,
+                 note=f"the form is made into Q1 = Kf/(2n²θ1) with the derived {what}")
 
 
 # ---------------------------------------------------------------- (116): the exact terms
