@@ -6,6 +6,7 @@ the report's headings group the Results of a chapter by equation number.
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
+from . import ch2_perturbations
 from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
 
 
@@ -24,6 +25,7 @@ CHAPTER_1 = (
 )
 CHAPTER_2 = (
     Section.of(ch2_general, "Chapter II. General theory of perturbations and the isochronism error (88)–(114)"),
+    Section.of(ch2_perturbations, "Chapter II. The blade's inertia and weight, the moment law (135)–(143)", shared=True),
 )
 CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
@@ -49,6 +51,7 @@ HEADINGS = (
      _eqs(64, 87, CHAPTER_1)),
     ("Chapter II. General theory of perturbations: f, ΔX, ΔY, ΔN (88)–(105)", _eqs(88, 105, CHAPTER_2)),
     ("Chapter II. The isochronism error and the classical formula (106)–(114)", _eqs(106, 114, CHAPTER_2)),
+    ("Chapter II. The blade's inertia and weight, Le Rolland's moment law (135)–(143)", _eqs(135, 143, CHAPTER_2)),
     ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, CHAPTER_3)),
     ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, CHAPTER_3)),
     ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, CHAPTER_3)),
