@@ -352,10 +352,11 @@ def eq139_q0() -> sp.Expr:
 
 
 def same_as_60(dT60: sp.Expr) -> sp.Expr:
-    """n°39: (60) with α = α' = 0, β = ΔE/E, minus the derived n°39 (Q = K(z − z'), and Q of (45) in (60))."""
-    from ..symbols import alpha_blade, alpha_rod, beta_t
+    """n°39: (60) with α = α' = 0, β = ΔE/E, minus the derived n°39, with Q = a − a1 + K²β1 = a + wλ + K²β1
+    ((45), a1 = −wλ (41)), the form in which (60) is derived."""
+    from ..symbols import a, alpha_blade, alpha_rod, beta1, beta_t, wl
     expr = dT60.subs({alpha_blade: 0, alpha_rod: 0, beta_t: dE_E})
-    return sp.simplify(expr - eq139_q0())
+    return sp.simplify(expr - eq139_q0().subs(Q, a + wl + K**2 * beta1))
 
 
 def i_recurrence() -> sp.Expr:

@@ -132,7 +132,8 @@ def young_order(name: str, general: bool) -> checks.Order:
         env = dict(env, **{"DeltaE/E": a0, G_2.name: env["G_2"]})
         if general:
             expr = expr.subs(sp.Symbol("q", integer=True, nonnegative=True), 0)
-            env.update({i_fn(2): i2, g_fn(1, a_q(0, sp.Symbol("s", real=True))): a0 * env["G_2"]})
+            a_0 = a_q(0, sp.Symbol("s", real=True))
+            env.update({i_fn(2): i2, g_fn(1, a_0): a0 * env["G_2"], a_0: a0})
         return verify.value_at(expr, env)
     return checks.Order(param="ΔE/E", values=lambda level: verify.geometric(*YOUNG, POINTS), truth=young_change(name),
                         at=at, expected=2,
