@@ -25,7 +25,9 @@ CHAPTER_1 = (
 )
 CHAPTER_2 = (
     Section.of(ch2_general, "Chapter II. General theory of perturbations and the isochronism error (88)–(114)"),
-    Section.of(ch2_perturbations, "Chapter II. The blade's inertia and weight, the moment law (135)–(143)", shared=True),
+    # the checks of (135)–(136) share the blades with mass and their quadratures
+    Section.of(ch2_perturbations.table_mass, "Chapter II. The blade's inertia and weight (135)–(136)", shared=True),
+    Section.of(ch2_perturbations.table_law, "Chapter II. Le Rolland's moment law, internal friction (137)–(149)"),
 )
 CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
@@ -51,7 +53,8 @@ HEADINGS = (
      _eqs(64, 87, CHAPTER_1)),
     ("Chapter II. General theory of perturbations: f, ΔX, ΔY, ΔN (88)–(105)", _eqs(88, 105, CHAPTER_2)),
     ("Chapter II. The isochronism error and the classical formula (106)–(114)", _eqs(106, 114, CHAPTER_2)),
-    ("Chapter II. The blade's inertia and weight, Le Rolland's moment law (135)–(143)", _eqs(135, 143, CHAPTER_2)),
+    ("Chapter II. The blade's inertia and weight, Le Rolland's moment law, internal friction (135)–(149)",
+     _eqs(135, 149, CHAPTER_2)),
     ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, CHAPTER_3)),
     ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, CHAPTER_3)),
     ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, CHAPTER_3)),

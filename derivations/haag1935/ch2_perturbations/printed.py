@@ -12,7 +12,8 @@ from pendsym.result import Reading
 from ..ch2_common import theta0
 from ..symbols import G_2, Gn, K, M_of_s, Q, g, lam, m, mb, n_squared, s, theta, v, w, x_of_s, y_of_s, z, zp
 from ..symbols import varphi1, varphi2
-from .derivation import I_lambda, J_w, a_q, c_curv, dE_E, g_fn, i_fn, mu, q, s1, s2, y_dd
+from .derivation import (I_lambda, J_w, a_f, a_q, ap_f, b_f, bp_f, c_curv, c_rate, dE_E, g_fn, i_fn, mu, n_freq,
+                         p_f, q, s1, s2, theta_dot, y_dd)
 
 
 def ordinate(x):
@@ -137,3 +138,40 @@ def eq143():
 def young():
     """n°39: ΔT/T = −(G2/(2Q))ΔE/E."""
     return -G_2 / (2 * Q) * dE_E
+
+
+# ---------------------------------------------------------------- n°40–42
+
+READ_147_I = Reading("i_{p+1,q} in (147), i_{p,q+1} in (149)", "as printed; i_mn = i_nm (the text's definition)")
+READ_BETA = Reading("élancement négative (n°40)", "élongation négative (a negative swing)")
+
+
+def friction_moment():
+    """(144): the moment diminished by M a_pq c^p c'^q (one term)."""
+    return -M_of_s(s) * a_f * c_curv ** p_f * c_rate ** q
+
+
+def eq146():
+    return -n_squared / K * g_fn(p_f + q, a_f) * theta ** p_f * theta_dot ** q
+
+
+def eq147():
+    return n_freq ** q / (4 * Q) * g_fn(p_f + q, b_f + bp_f - a_f - ap_f) * i_fn(p_f + 1, q) * theta0 ** (p_f + q - 1)
+
+
+def eq149():
+    return -sp.pi / 2 * n_freq ** q / Q * g_fn(p_f + q, a_f + b_f + ap_f + bp_f) * i_fn(p_f, q + 1) * theta0 ** (p_f + q)
+
+
+def i_symmetric():
+    """i_mn = i_nm (the text's definition of i_mn)."""
+    return sp.Integer(0)
+
+
+def first_line_149():
+    return sp.Symbol("Int_f_dtheta") / (n_freq ** 2 * (z - zp) * theta0)
+
+
+# g_q(x) of (139) is linear in x: g(b + b' − a − a') = (b + b' − a − a')g(1) for constant coefficients
+DEFS_147 = ((g_fn(p_f + q, b_f + bp_f - a_f - ap_f), (b_f + bp_f - a_f - ap_f) * g_fn(p_f + q, 1)),)
+DEFS_149 = ((g_fn(p_f + q, a_f + b_f + ap_f + bp_f), (a_f + b_f + ap_f + bp_f) * g_fn(p_f + q, 1)),)

@@ -142,3 +142,64 @@ def young_order(name: str, general: bool) -> checks.Order:
                         params=(("blade", name), ("pendulum", PENDULUM)),
                         note=("q = 0, a0 constant; i_2 by quadrature, g_1(a0) = a0∫(Kv + w)²/M ds on the shot blade"
                               if general else "G2 = ∫(Kv + w)²/M ds on the shot blade"))
+
+
+# ---------------------------------------------------------------- (147), (149): the damped oscillation
+# the reduced equation θ'' + n²θ = f/(z − z') of n°28 with a dissipative friction of degrees p, q whose
+# magnitude depends on the quadrant: C_out on the way out (|θ| growing), C_in on the way back, on each side
+FRICTION = {"p": 1, "q": 1, "n": "1.3", "Q": "0.8", "theta_0": "0.05",
+            "a_pq": "0.3", "b_pq": "0.7", "a'_pq": "0.2", "b'_pq": "0.5"}
+STRENGTHS = ("0.001", "0.1")            # the scale ε of the four coefficients
+
+
+def friction_cycle(eps: str, dps: int) -> tuple:
+    """(T n/(2π) − 1, θ(T) − θ0) over one period from the maximum θ0 (θ' = 0) to the next maximum, for
+    θ'' = −n²θ − sign(θ')(n²/Q)C|θ|^p|θ'|^q (a force that always opposes the motion), C = ε·(b, a', b', a) in
+    the quadrants (θ > 0 back, θ < 0 out, θ < 0 back, θ > 0 out); odefun on each quadrant, its end (θ = 0 or
+    θ' = 0) found by findroot on the dense solution."""
+    with mp.workdps(dps + 10):
+        F = {k: mp.mpf(v) if isinstance(v, str) else v for k, v in FRICTION.items()}
+        e = mp.mpf(eps)
+        n, Q, p, q = F["n"], F["Q"], F["p"], F["q"]
+        # (coefficient, ends at θ' = 0, sign of θ'): back on the right, out on the left, back on the left, out on the right
+        quadrants = ((F["b_pq"], 0, -1), (F["a'_pq"], 1, -1), (F["b'_pq"], 0, 1), (F["a_pq"], 1, 1))
+        t, state = mp.mpf(0), [F["theta_0"], mp.mpf(0)]
+        tol = mp.mpf(10) ** (-(dps + 8))
+        for C, ends_on_rate, sign_rate in quadrants:
+            def rhs_q(_, y, C=C, sg=sign_rate):
+                return [y[1], -n**2 * y[0] - sg * n**2 / Q * e * C * abs(y[0]) ** p * abs(y[1]) ** q]
+            sol = mp.odefun(rhs_q, t, state, tol=tol)
+            k = 1 if ends_on_rate else 0
+            t = mp.findroot(lambda x: sol(x)[k], t + mp.pi / (2 * n), tol=mp.mpf(10) ** (-2 * (dps + 6)))
+            state = list(sol(t))
+            state[k] = mp.mpf(0)
+        return t * n / (2 * mp.pi) - 1, state[0] - F["theta_0"]
+
+
+def friction_order(component: int) -> checks.Order:
+    """(147) (component 0: ΔT/T) or (149) (component 1: Δθ0) against the integrated damped oscillation:
+    residual O(ε²)."""
+    def truth(eps, dps):
+        return friction_cycle(mp.nstr(mp.mpf(eps), 20), dps)[component]
+
+    def at(expr, eps):
+        e = mp.mpf(eps)
+        F = FRICTION
+        p, q = F["p"], F["q"]
+        m_, n_ = (p + 1, q) if component == 0 else (p, q + 1)
+        with mp.workdps(checks.DPS + 10):
+            i_mn = 2 / mp.pi * mp.quad(lambda x: mp.cos(x) ** m_ * mp.sin(x) ** n_, [0, mp.pi / 2])
+        pq = sp.Symbol("p", integer=True, nonnegative=True), sp.Symbol("q", integer=True, nonnegative=True)
+        expr = expr.subs({pq[0]: p, pq[1]: q})
+        env = {"n": F["n"], "Q": F["Q"], "theta_0": F["theta_0"],
+               **{k: e * mp.mpf(F[k]) for k in ("a_pq", "b_pq", "a'_pq", "b'_pq")},
+               g_fn(p + q, 1): 1, i_fn(m_, n_): i_mn}
+        return verify.value_at(expr, env)
+    what = "ΔT/T = Tn/(2π) − 1" if component == 0 else "Δθ0 = θ(T) − θ0"
+    return checks.Order(param="ε", values=lambda level: verify.geometric(*STRENGTHS, POINTS), truth=truth, at=at,
+                        expected=2,
+                        truth_desc="θ'' + n²θ = −sign(θ')(n²/Q)C|θ|^p|θ'|^q (the reduced equation of n°28 with a "
+                                   "friction opposing the motion, C by quadrant: b, a' back and out on the left, …) "
+                                   f"integrated by odefun over one period from a maximum to the next: {what}",
+                        params=tuple((k, str(v)) for k, v in FRICTION.items()),
+                        note="g_{p+q}(1) = 1 (the coefficients stand for g_{p+q}(a_pq) …); i_mn by quadrature")
