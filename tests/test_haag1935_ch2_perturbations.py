@@ -3,7 +3,7 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from derivations.haag1935.ch2_perturbations import derivation, printed, truth
+from derivations.haag1935.ch2_perturbations import derivation, derivation_friction, printed, truth
 from derivations.haag1935.symbols import G_2, K, Q, z, zp
 
 
@@ -73,3 +73,27 @@ def test_density_follows_the_width():
     s = sp.Symbol("s", real=True)
     assert rho.subs(s, sp.Rational(1, 20)) == rho.subs(s, sp.Rational(1, 100)) / 2
     assert sp.integrate(rho, (s, 0, sp.Rational(1, 10))) == 1
+
+
+def test_147_149_as_printed_with_g_linear():
+    from derivations.haag1935.ch2_perturbations.printed import DEFS_147, DEFS_149
+    assert sp.simplify(derivation_friction.eq147() - printed.eq147().subs(dict(DEFS_147))) == 0
+    assert sp.simplify(derivation_friction.eq149() - printed.eq149().subs(dict(DEFS_149))) == 0
+    assert sp.simplify(derivation_friction.eq146() - printed.eq146()) == 0
+
+
+def test_friction_cycle_against_147_149_and_a_swapped_quadrant_fails():
+    """At ε = 0.01 (p = q = 1) the integrated cycle agrees with (147), (149) to 1 %; exchanging the outgoing
+    and incoming coefficients on the left (a' ↔ b') changes the sign of the first-order ΔT/T's part."""
+    eps = mp.mpf("0.01")
+    F = truth.FRICTION
+    dT, dtheta = truth.friction_cycle("0.01", 20)
+    n, Q, th0 = (mp.mpf(F[k]) for k in ("n", "Q", "theta_0"))
+    a, b, ap, bp = (eps * mp.mpf(F[k]) for k in ("a_pq", "b_pq", "a'_pq", "b'_pq"))
+    i21 = i12 = 2 / (3 * mp.pi)
+    formula_T = n / (4 * Q) * (b + bp - a - ap) * i21 * th0
+    formula_A = -mp.pi / 2 * n / Q * (a + b + ap + bp) * i12 * th0**2
+    assert abs(dT - formula_T) < mp.mpf("0.01") * abs(formula_T)
+    assert abs(dtheta - formula_A) < mp.mpf("0.01") * abs(formula_A)
+    swapped = n / (4 * Q) * (b + ap - a - bp) * i21 * th0
+    assert abs(dT - swapped) > mp.mpf("0.1") * abs(dT)

@@ -9,7 +9,9 @@ is perturbed, so (104) keeps its last two terms, which (105) turns into f = (n²
 - n°37, its weight: the tension at s grows by the weight of the blade below s; ε(λ) = 0; s − x = ½∫φ² from
   x' = cos φ (3).
 - n°38–39, the law EIc(1 + a_q c^q) (137): ε is the moment beyond Mc, with c = φ' = θ(Kv + w)/M in the
-  principal oscillation ((9), (13)).
+  principal oscillation ((9), (13)); i_q of (142)–(143) by the Wallis recurrence solved by rsolve.
+
+n°40–42 (internal friction) are in :mod:`.derivation_friction`.
 
 The order of the nested integrals is changed by :func:`swap` (the triangle x < y), the integrations by parts
 are proved by :func:`parts_identity` and :func:`slope_identity`, and ΔT/T follows from f by the classical
@@ -19,13 +21,14 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..ch2_common import theta0
+from pendsym import wallis
+from ..ch2_common import eps_lambda, theta0
 from ..ch2_general import derivation as general
-from ..symbols import (G_2, Gn, K, M_of_s, Q, epsilon_of_s, g, lam, m, mb, n_squared, s, theta, v, varphi1,
-                       varphi2, w, y_of_s, z, zp)
+from ..symbols import (G_2, Gn, K, M_of_s, Q, a, alpha_blade, alpha_rod, beta1, beta_t, epsilon_of_s, g, lam, m, mb,
+                       n_squared, s, theta, v, varphi1, varphi2, w, wl, y_of_s, z, zp)
 
 mu = sp.Function("mu")                         # linear density μ(s) of the blade (n°36)
-y_dd = sp.Function("ddot_y")                   # d²y/dt² at the point of abscissa s (n°36)
+y_dd = sp.Function("yddot")                    # d²y/dt² at the point of abscissa s (n°36)
 s1, s2 = sp.symbols("s_1 s_2", real=True)   # Haag's s', s'' (variables of integration)
 I_lambda = sp.Symbol("I_lambda", positive=True)   # moment of inertia of the blade for θ = 1 (n°36)
 J_w = sp.Symbol("J", positive=True)            # J of n°37
@@ -34,7 +37,7 @@ a_q = sp.Function("a")                         # a_q (137), a function of s in g
 c_curv = sp.Symbol("c", real=True)             # curvature c = 1/ρ (137)
 g_fn = sp.Function("g")                        # g_q(x) of (139): g(q, x)
 i_fn = sp.Function("i")                        # i_q of (141): i(q)
-dE_E = sp.Symbol("DeltaE/E", real=True)        # ΔE/E of n°39
+dE_E = sp.Symbol("dE/E", real=True)            # ΔE/E of n°39
 phi = sp.Symbol("phi", real=True)              # the phase of the principal oscillation (n°29)
 
 
@@ -134,7 +137,6 @@ def replace_inner(expr: sp.Expr, lhs: sp.Integral, rhs: sp.Expr) -> sp.Expr:
 def f_of_moment(eps_of) -> sp.Expr:
     """f = −(n²/K)·[the last two terms of (104)], by (105), for the moment increment ε(s) = eps_of(s) with
     ε(λ) = 0: ∫ε'(Kφ1 + φ2) ds − ε_λ = −∫ε(Kv + w)/M ds."""
-    from ..ch2_common import eps_lambda
     last = general.eq105().subs(eps_lambda, 0)
     last = last.replace(epsilon_of_s, eps_of)
     return -n_squared / K * last
@@ -279,7 +281,7 @@ def law_moment() -> sp.Expr:
     """n°38: ε = −M a_q c^{q+1}: the moment EIc(1 + a_q c^q) (137), over mg, minus Mc (so that the blade's
     equation keeps d(Mφ')/ds on its left: ε is what the law adds)."""
     moment = M_of_s(s) * c_curv * (1 + a_q(q, s) * c_curv**q)
-    return sp.expand(M_of_s(s) * c_curv - moment)
+    return sp.powsimp(sp.expand(M_of_s(s) * c_curv - moment))
 
 
 def eq138() -> sp.Expr:
@@ -331,22 +333,16 @@ def eq141() -> sp.Expr:
 def odd_terms_vanish() -> sp.Expr:
     """n°38: a term of odd rank q in algebraic value: f ∝ θ^{q+1}, and ∫_0^{2π}cos^{q+1}φ cos φ dφ = 0 for
     q + 2 odd: cos^{q+2}(π − φ) = −cos^{q+2}φ, so the half-periods cancel (pendsym.wallis.parity_reflection)."""
-    from pendsym import wallis
     n = sp.Symbol("n", integer=True, nonnegative=True)
     y = sp.Symbol("y", real=True)
     # cos^{q+2} with q = 2n + 1: the Wallis integrand cos^{m+1} with m = q + 1 = 2n + 2
     return sp.simplify(wallis.parity_reflection(2 * n + 2, y))
 
 
-def i_gamma() -> sp.Expr:
-    """i_q = (2/π)∫_0^{π/2}cos^q φ dφ (141) by SymPy: a ratio of Gamma functions (then (142), (143))."""
-    return sp.gammasimp(2 / sp.pi * sp.integrate(sp.cos(phi) ** q, (phi, 0, sp.pi / 2), conds="none"))
-
-
 def eq139_q0() -> sp.Expr:
-    """n°39: (141) with q = 0, a_0 = ΔE/E constant: i_2 = 1/2 (i_q of SymPy), g_1 = a_0G_2 (140)."""
+    """n°39: (141) with q = 0, a_0 = ΔE/E constant: i_2 of (142), g_1 = a_0G_2 (140)."""
     rel = eq141().subs(q, 0)
-    i2 = i_gamma().subs(q, 2)
+    i2 = eq142().subs(q, 2)
     g1 = eq140().subs(q, 1).subs(sp.Symbol("x"), dE_E)
     return sp.simplify(rel.subs(i_fn(2), i2).subs(g_fn(1, a_q(0, s)), g1).subs(Gn(2), G_2))
 
@@ -354,7 +350,6 @@ def eq139_q0() -> sp.Expr:
 def same_as_60(dT60: sp.Expr) -> sp.Expr:
     """n°39: (60) with α = α' = 0, β = ΔE/E, minus the derived n°39, with Q = a − a1 + K²β1 = a + wλ + K²β1
     ((45), a1 = −wλ (41)), the form in which (60) is derived."""
-    from ..symbols import a, alpha_blade, alpha_rod, beta1, beta_t, wl
     expr = dT60.subs({alpha_blade: 0, alpha_rod: 0, beta_t: dE_E})
     return sp.simplify(expr - eq139_q0().subs(Q, a + wl + K**2 * beta1))
 
@@ -363,7 +358,6 @@ def i_recurrence() -> sp.Expr:
     """n°38: q·i_q = (q − 1)·i_{q−2}: d/dφ[sin φ cos^{q−1}φ] = q cos^q φ − (q − 1)cos^{q−2}φ
     (:func:`pendsym.wallis.recurrence_defect` with m = q − 1 is 0), integrated over [0, π/2], where
     sin φ cos^{q−1}φ vanishes at both ends (q ≥ 2).  Returns the boundary term for q = 2n + 2 (0)."""
-    from pendsym import wallis
     y = sp.Symbol("y", real=True)
     m_ = sp.Symbol("m")
     if sp.simplify(wallis.recurrence_defect(m_, y).subs(m_, q - 1)) != 0:
@@ -396,122 +390,3 @@ def eq142() -> sp.Expr:
 def eq143() -> sp.Expr:
     """(143): i_q for q odd."""
     return _i_by_parity(1)
-
-
-# ================================================================ n°40–42: internal friction
-p_f = sp.Symbol("p", integer=True, nonnegative=True)      # degree in c of a friction term (144)
-a_f, b_f, ap_f, bp_f = sp.symbols("a_pq b_pq a'_pq b'_pq", real=True)   # the coefficients of (144), (145)
-c_rate = sp.Symbol("c'", real=True)                        # c' = dc/dt (144)
-theta_dot = sp.Symbol("theta'", real=True)
-n_freq = sp.Symbol("n", positive=True)
-
-
-def friction_moment() -> sp.Expr:
-    """n°41: ε of the outgoing friction (144), one term: the moment diminished by M a_pq c^p c'^q."""
-    return -M_of_s(s) * a_f * c_curv**p_f * c_rate**q
-
-
-def eq146() -> sp.Expr:
-    """(146): f by (104)–(105) for θ, θ' > 0, c = θ(Kv + w)/M, c' = θ'(Kv + w)/M ((9), (13)): the integral is
-    g_{p+q}(a_pq) of (139) (a_pq constant along the blade taken inside g)."""
-    eps = friction_moment().subs({c_curv: theta * slope_rate(s), c_rate: theta_dot * slope_rate(s)})
-    f = f_of_moment(lambda x: eps.subs(s, x))
-    k, integral = _single_integral(f)
-    body = sp.powsimp(sp.expand_power_base(sp.powsimp(integral.function, force=True), force=True),
-                      force=True, combine="exp")
-    consts = sp.Mul(*[x for x in sp.Mul.make_args(body) if not x.has(s)])
-    rest = sp.Mul(*[x for x in sp.Mul.make_args(body) if x.has(s)])
-    target = eq139().function.subs(q, p_f + q).subs(sp.Symbol("x"), 1)
-    if sp.simplify(sp.powsimp(rest / target, force=True)) != 1:
-        raise ValueError(f"the integrand is not that of g_(p+q): {rest}")
-    coeff = consts / a_f
-    return sp.powsimp(k * coeff * g_fn(p_f + q, a_f), force=True)
-
-
-def friction_quadrants() -> tuple:
-    """n°41: f in the four quadrants of the phase φ (θ = θ0 cos φ, θ' = −nθ0 sin φ), by Haag's replacements
-    in (146): θ > 0, θ' < 0: a → −b, θ' → −θ'; θ < 0, θ' < 0: a → −a', θ → −θ, θ' → −θ'; θ < 0, θ' > 0:
-    a → b', θ → −θ; θ > 0, θ' > 0: (146) itself.  Returns ((φ_lo, φ_hi, f), …); g is linear in its argument."""
-    f = eq146()
-    g_of = lambda coef: f.xreplace({g_fn(p_f + q, a_f): coef * g_fn(p_f + q, 1)})
-    rules = ((0, sp.pi / 2, {a_f: -b_f}, {theta_dot: -theta_dot}),
-             (sp.pi / 2, sp.pi, {a_f: -ap_f}, {theta: -theta, theta_dot: -theta_dot}),
-             (sp.pi, 3 * sp.pi / 2, {a_f: bp_f}, {theta: -theta}),
-             (3 * sp.pi / 2, 2 * sp.pi, {}, {}))
-    out = []
-    for lo, hi, coef, signs in rules:
-        expr = g_of(a_f.xreplace(coef)).xreplace(signs)
-        out.append((lo, hi, expr))
-    return tuple(out)
-
-
-def _quarter(expr_of_phi: sp.Expr, lo) -> sp.Expr:
-    """∫_lo^{lo+π/2} expr dφ moved to (0, π/2) by φ = lo + u (cos, sin shifted by SymPy), the powers of
-    −cos, −sin of the moved quadrant made positive, then cos^m sin^n → (π/2)i_mn (i_mn = (2/π)∫cos^m sin^n)."""
-    u = sp.Symbol("u", positive=True)
-    moved = sp.powsimp(sp.expand_power_base(expr_of_phi.subs(phi, lo + u), force=True), force=True)
-    moved = sp.powdenest(moved, force=True)
-    coeff, cs, sn = sp.S.One, sp.S.Zero, sp.S.Zero
-    for fac in sp.Mul.make_args(sp.expand_power_base(moved, force=True)):
-        base, ex = fac.as_base_exp()
-        if base in (sp.cos(u), -sp.cos(u)) or base == sp.cos(u):
-            cs += ex
-            coeff *= (-1) ** ex if base == -sp.cos(u) else 1
-        elif base in (sp.sin(u), -sp.sin(u)):
-            sn += ex
-            coeff *= (-1) ** ex if base == -sp.sin(u) else 1
-        elif base == -1:
-            coeff *= fac
-        else:
-            if fac.has(u):
-                raise ValueError(f"{fac} in a quadrant")
-            coeff *= fac
-    return sp.powsimp(coeff, force=True) * sp.pi / 2 * i_fn(sp.expand(cs), sp.expand(sn))
-
-
-def _along(f: sp.Expr) -> sp.Expr:
-    """f along θ = θ0 cos φ, θ' = −nθ0 sin φ (φ = nt)."""
-    return f.subs({theta: theta0 * sp.cos(phi), theta_dot: -n_freq * theta0 * sp.sin(phi)}, simultaneous=True)
-
-
-def i_symmetric() -> sp.Expr:
-    """n°41: i_mn = i_nm: cos^m φ sin^n φ at φ = π/2 − u is cos^n u sin^m u (SymPy's shift); returns the
-    difference of the integrands, 0."""
-    m_, n_ = sp.symbols("m n", integer=True, nonnegative=True)
-    u = sp.Symbol("u", positive=True)
-    return sp.simplify((sp.cos(phi) ** m_ * sp.sin(phi) ** n_).subs(phi, sp.pi / 2 - u) - sp.cos(u) ** n_ * sp.sin(u) ** m_)
-
-
-def _ordered(expr: sp.Expr, first: sp.Expr) -> sp.Expr:
-    """i(m, n) written with ``first`` as its first index when the other order occurs (i_mn = i_nm,
-    :func:`i_symmetric`)."""
-    if i_symmetric() != 0:
-        raise ValueError("i_mn is not symmetric")
-    return expr.replace(lambda e: isinstance(e, sp.Function) and e.func == i_fn and len(e.args) == 2
-                        and e.args[1] == first, lambda e: i_fn(e.args[1], e.args[0]))
-
-
-def eq147() -> sp.Expr:
-    """(147): ΔT/T by (114) (the perturbation of θ'' is f/(z − z')), the four quadrants moved to (0, π/2);
-    n² of (114) is n_freq² here; Q = K(z − z') (45)."""
-    C = sum(_quarter(_along(f) / (z - zp) * sp.cos(phi), lo) for lo, hi, f in friction_quadrants())
-    rel = general.eq114_relative().subs(sp.Symbol("C"), C).subs(n_squared, n_freq**2)
-    rel = sp.simplify(rel.subs(n_squared, n_freq**2))
-    return _ordered(sp.factor(sp.simplify(sp.powsimp(rel.subs(z, Q / K + zp), force=True))), p_f + 1)
-
-
-def eq149() -> sp.Expr:
-    """(149): Δθ0 by the first line of n°42 (:func:`first_line_149`) with ∫f dθ over a period, dθ = −θ0 sin φ dφ,
-    the quadrants moved to (0, π/2); Q = K(z − z')."""
-    total = sum(_quarter(_along(f) * (-theta0 * sp.sin(phi)), lo) for lo, hi, f in friction_quadrants())
-    total = total.subs(n_squared, n_freq**2)
-    out = first_line_149().subs(sp.Symbol("Int_f_dtheta"), total).subs(z, Q / K + zp)
-    return _ordered(sp.factor(sp.simplify(sp.powsimp(out, force=True))), p_f)
-
-
-def first_line_149() -> sp.Expr:
-    """n°42: the first line, Δθ0 = (1/(n²(z − z')θ0))∫f dθ, from the energy of y'' + n²y = f, y = (z − z')θ:
-    Δ(½y'² + ½n²y²) = ∫f dy over a period, and ½n²y0² changes by n²y0Δy0 (Int_f_dtheta stands for ∫f dθ)."""
-    y0, dy0, F = sp.symbols("y_0 Delta_y_0 F")          # F = ∫f dy
-    sol = sp.solve(sp.Eq(n_freq**2 * y0 * dy0, F), dy0)[0]
-    return sp.simplify(sol.subs({y0: (z - zp) * theta0, F: (z - zp) * sp.Symbol("Int_f_dtheta")}) / (z - zp))

@@ -12,8 +12,8 @@ from pendsym.result import Reading
 from ..ch2_common import theta0
 from ..symbols import G_2, Gn, K, M_of_s, Q, g, lam, m, mb, n_squared, s, theta, v, w, x_of_s, y_of_s, z, zp
 from ..symbols import varphi1, varphi2
-from .derivation import (I_lambda, J_w, a_f, a_q, ap_f, b_f, bp_f, c_curv, c_rate, dE_E, g_fn, i_fn, mu, n_freq,
-                         p_f, q, s1, s2, theta_dot, y_dd)
+from .derivation import I_lambda, J_w, a_q, c_curv, dE_E, g_fn, i_fn, mu, q, s1, s2, y_dd
+from .derivation_friction import a_f, ap_f, b_f, bp_f, c_rate, n_freq, p_f, theta_dot
 
 
 def ordinate(x):
@@ -169,7 +169,7 @@ def i_symmetric():
 
 
 def first_line_149():
-    return sp.Symbol("Int_f_dtheta") / (n_freq ** 2 * (z - zp) * theta0)
+    return sp.Symbol("I_f") / (n_freq ** 2 * (z - zp) * theta0)
 
 
 # g_q(x) of (139) is linear in x: g(b + b' − a − a') = (b + b' − a − a')g(1) for constant coefficients

@@ -6,7 +6,7 @@ import sympy as sp
 from pendsym import checks
 from pendsym.result import Spec
 from ..common import READ_VW, rid, src, step
-from . import derivation, printed, truth
+from . import derivation, derivation_friction, printed, truth
 from .printed import READ_139, READ_147_I, READ_BETA, READ_EPS, READ_G0
 
 EXACT = "symbolic proof (SymPy)"
@@ -66,22 +66,22 @@ def specs() -> tuple[Spec, ...]:
              check=checks.Proof("(60) with α = α' = 0, β = ΔE/E minus the derived n°39 is 0", truth=EXACT)),
         # ---------------------------------------------------------------- n°40–42
         Spec(rid(144, "eps"), "ε of the outgoing friction: −Ma_pq c^p c'^q", src(40, "144"), r"\varepsilon",
-             step(derivation.friction_moment), printed=printed.friction_moment, readings=(READ_BETA,),
+             step(derivation_friction.friction_moment), printed=printed.friction_moment, readings=(READ_BETA,),
              check=checks.Chain((FRICTION_T,)), note="One term of (144); c' = dc/dt."),
-        Spec(rid(146, "f"), "f = −(n²/K)g_{p+q}(a_pq)θ^pθ'^q", src(41, "146"), "f", step(derivation.eq146),
+        Spec(rid(146, "f"), "f = −(n²/K)g_{p+q}(a_pq)θ^pθ'^q", src(41, "146"), "f", step(derivation_friction.eq146),
              printed=printed.eq146, check=checks.Chain((FRICTION_T, FRICTION_AMP)),
              note="(104)–(105) with c = θ(Kv + w)/M, c' = θ'(Kv + w)/M; the integral recognised as g_{p+q}."),
         Spec(rid(148, "symmetric"), "i_mn = i_nm", src(41, None), r"\cos^m\sin^n(\tfrac{\pi}{2} - u) - \cos^n\sin^m u",
-             step(derivation.i_symmetric), printed=printed.i_symmetric,
+             step(derivation_friction.i_symmetric), printed=printed.i_symmetric,
              check=checks.Proof("the substitution φ = π/2 − u exchanges cos and sin", truth=EXACT)),
-        Spec(FRICTION_T, "ΔT/T of internal friction", src(41, "147"), r"\frac{\Delta T}{T}", step(derivation.eq147),
+        Spec(FRICTION_T, "ΔT/T of internal friction", src(41, "147"), r"\frac{\Delta T}{T}", step(derivation_friction.eq147),
              printed=printed.eq147, defs=printed.DEFS_147, readings=(READ_147_I,), check=truth.friction_order(0),
              note="(146) in the four quadrants by Haag's replacements, first harmonic (114); checked at p = q = 1 on "
                   "the reduced equation θ'' + n²θ = f/(z − z') (the step from (146), not (146) itself)."),
         Spec(rid(149, "energy"), "Δθ0 = (1/(n²(z − z')θ0))∫f dθ", src(42, None), r"\Delta\theta_0",
-             step(derivation.first_line_149), printed=printed.first_line_149, check=checks.Chain((FRICTION_AMP,)),
-             note="From the energy of y'' + n²y = f over a period; Int_f_dθ stands for ∫f dθ."),
-        Spec(FRICTION_AMP, "Δθ0 per period (damping)", src(42, "149"), r"\Delta\theta_0", step(derivation.eq149),
+             step(derivation_friction.first_line_149), printed=printed.first_line_149, check=checks.Chain((FRICTION_AMP,)),
+             note="From the energy of y'' + n²y = f over a period; I_f stands for ∫f dθ."),
+        Spec(FRICTION_AMP, "Δθ0 per period (damping)", src(42, "149"), r"\Delta\theta_0", step(derivation_friction.eq149),
              printed=printed.eq149, defs=printed.DEFS_149, readings=(READ_147_I,), check=truth.friction_order(1),
              note="Checked at p = q = 1 on the reduced equation, as (147)."),
     )

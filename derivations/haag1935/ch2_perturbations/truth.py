@@ -129,7 +129,7 @@ def young_order(name: str, general: bool) -> checks.Order:
         a0 = mp.mpf(a0)
         with mp.workdps(checks.DPS + 10):
             i2 = 2 / mp.pi * mp.quad(lambda x: mp.cos(x) ** 2, [0, mp.pi / 2])
-        env = dict(env, **{"DeltaE/E": a0, G_2.name: env["G_2"]})
+        env = dict(env, **{"dE/E": a0, G_2.name: env["G_2"]})
         if general:
             expr = expr.subs(sp.Symbol("q", integer=True, nonnegative=True), 0)
             a_0 = a_q(0, sp.Symbol("s", real=True))
