@@ -97,3 +97,17 @@ def test_friction_cycle_against_147_149_and_a_swapped_quadrant_fails():
     assert abs(dtheta - formula_A) < mp.mpf("0.01") * abs(formula_A)
     swapped = n / (4 * Q) * (b + ap - a - bp) * i21 * th0
     assert abs(dT - swapped) > mp.mpf("0.1") * abs(dT)
+
+
+def test_inertia_and_weight_together_add_135_and_136():
+    """The blade with both its inertia and its weight: T/T0 − 1 is (135) + (136) to first order in m'/m."""
+    from pendsym import massive_blade
+    from derivations.haag1935 import profiles
+    ratio = "0.001"
+    both = massive_blade.MassiveBlade(profiles.profile("uniform"), sp.Rational(ratio) * truth.density("uniform"))
+    with mp.workdps(30):
+        true = massive_blade.relative_period_change(both, *profiles.PENDULUMS["compact"], dps=20)
+        env = truth.blade_env("uniform", 30)
+        p = mp.mpf(ratio)
+        formula = (-p * env["I_unit"] / (2 * env["z'"] * (env["z"] - env["z'"])) - p * env["J_unit"] / env["Q"])
+        assert abs(true - formula) < mp.mpf("0.01") * abs(formula)
