@@ -157,14 +157,16 @@ def inertia_moment() -> sp.Expr:
     t = sp.Symbol("t", real=True)
     eps_prime = sp.Integral(mu(s1) * y_dd(s1), (s1, t, lam)) / (m * g)
     inner = inner_doit(swap(sp.Integral(eps_prime, (t, s, lam))))
-    return -sp.Integral(sp.factor(inner.function), inner.limits[0])
+    return -pull_out(sp.Integral(sp.expand(inner.function), inner.limits[0]))
 
 
 def inertia_moment_principal() -> sp.Expr:
     """n°36: ε in the principal oscillation, ÿ = −n²y, y = θ∫_0^s'(Kφ1 + φ2) (first approximation),
     g = −n²z'/K (34)."""
-    eps = inertia_moment().replace(y_dd, lambda x: -n_squared * theta * ordinate(x))
-    return eps.subs(g, -n_squared * zp / K)
+    eps = inertia_moment().replace(y_dd, lambda x: -n_squared * theta * ordinate(x)).subs(g, -n_squared * zp / K)
+    c, integral = _single_integral(eps)
+    c2, integral = _single_integral(pull_out(integral))
+    return sp.simplify(c * c2) * integral
 
 
 def parts_identity() -> sp.Tuple:
@@ -224,7 +226,7 @@ def weight_moment() -> sp.Expr:
     t = sp.Symbol("t", real=True)
     eps_prime = y_of_s(t).diff(t) * sp.Integral(mu(s1), (s1, t, lam)) / m
     inner = inner_doit(swap(sp.Integral(eps_prime, (t, s, lam))))
-    return -sp.Integral(sp.factor(inner.function), inner.limits[0])
+    return -pull_out(sp.Integral(sp.expand(inner.function), inner.limits[0]))
 
 
 def slope_identity() -> sp.Tuple:
