@@ -199,7 +199,8 @@ def friction_order(component: int) -> checks.Order:
     return checks.Order(param="ε", values=lambda level: verify.geometric(*STRENGTHS, POINTS), truth=truth, at=at,
                         expected=2,
                         truth_desc="θ'' + n²θ = −sign(θ')(n²/Q)C|θ|^p|θ'|^q (the reduced equation of n°28 with a "
-                                   "friction opposing the motion, C by quadrant: b, a' back and out on the left, …) "
+                                   "friction opposing the motion, C by quadrant: b right going back, a' left going out, b' left going "
+                                   "back, a right going out) "
                                    f"integrated by odefun over one period from a maximum to the next: {what}",
                         params=tuple((k, str(v)) for k, v in FRICTION.items()),
                         note="g_{p+q}(1) = 1 (the coefficients stand for g_{p+q}(a_pq) …); i_mn by quadrature")
