@@ -125,3 +125,11 @@ def test_the_blade_is_stable_at_every_k_drawn_and_no_kernel_is_claimed(plots):
     fig, plot = plots[0]["haag1935.fig.rhombus_G2"]
     kernel = series(plots, "haag1935.fig.rhombus_G2", "stable kernel")
     assert kernel == () and any("no kernel of haag1935.eq346.G2" in n for n in plot.notes)
+
+
+def test_no_result_key_covers_a_figure_module():
+    """A figure's module is outside every section's imports: editing a figure re-checks no Result."""
+    from pendsym import keys
+    roots = ("pendsym", "derivations")
+    for sec in MEMOIR.sections:
+        assert not any(m.endswith(".figures") or m == "pendsym.figure" for m in keys.closure(sec.module, roots))
