@@ -5,7 +5,6 @@ import math
 
 import mpmath as mp
 import pytest
-import sympy as sp
 
 from pendsym import figure, registry, verify
 from derivations.haag1935 import MEMOIR

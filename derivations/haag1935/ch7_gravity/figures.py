@@ -29,8 +29,8 @@ def sensitivity(u, dps) -> mp.mpf:
 SENSITIVITY = Figure(
     id="haag1935.fig.sensitivity", module=__name__,
     title="The sensitivity coefficient G against u",
-    caption=(f"The gravity pendulum with direct suspension near the critical distance, a − a₁ = ελ (256) with "
-             f"ε = 10^(-4) (n°82–85): G = 2 d log T/d log g of the uniform blade against u = λω. The derived (263) is "
+    caption=("The gravity pendulum with direct suspension near the critical distance, a − a₁ = ελ (256) with "
+             "ε = 10^(-4) (n°82–85): G = 2 d log T/d log g of the uniform blade against u = λω. The derived (263) is "
              "the principal part in ε: the truth lies below it by about 1 (the −1 of G = −1 + G₂/Q, (62)), "
              "invisible at this scale. (264), G = 1/(εu²), holds for u ≪ 1 only."),
     x=Axis("u", log=True, lo=0.1, hi=10), y=Axis("G", log=True),
