@@ -8,6 +8,9 @@ from pendsym.memoir import Memoir, Section, headings_by
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
 from . import ch2_perturbations
 from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
+from .ch7_gravity import figures as ch7_figures
+from .ch8_inverted import figures as ch8_figures
+from .ch9_holes import figures as ch9_figures
 
 
 def _of(package) -> tuple[Section, ...]:
@@ -86,4 +89,5 @@ MEMOIR = Memoir(
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,
+    figures=ch7_figures.FIGURES + ch8_figures.FIGURES + ch9_figures.FIGURES,
 )
