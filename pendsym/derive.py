@@ -31,7 +31,8 @@ def derive_all(out: Path, level: str = "full", log: Callable[[str], None] = prin
     records, formed = stages.check_and_form(plan, built, log, progress)  # compare → check → chains,
     #                                                                and stable forms measured in Python
     formed = stages.measure_c(plan, built, formed, log)            # the emitted C, measured
-    texts = stages.emit(plan, records, formed, out, log)           # kernels, reports, results.json
+    plots = stages.sample_figures(plan, built, formed, log)        # the reports' figures
+    texts = stages.emit(plan, records, formed, out, log, plots)    # kernels, reports, results.json
     failed = tuple(r.result.id for r in stages.failures(records))
     written = stages.write(texts, tree, out, remember=not failed)  # a failure is never "nothing changed"
     return Outcome(tuple(written), failed, tuple(stages.summary(records)))

@@ -56,7 +56,9 @@ class Memoir:
     ``kernels``: whether its kernel declarations are ready to be emitted;
     ``headings``: the report's structure, when it differs from the sections;
     ``swing_correction``: the name of a generated kernel f(alpha, k) giving the memoir's correction to
-    one swing's duration, which ``make bench`` sets beside the exact swing time.
+    one swing's duration, which ``make bench`` sets beside the exact swing time;
+    ``figures``: the report's figures (:class:`pendsym.figure.Figure`, not imported here so that the
+    figures' module stays out of every Result's key), sampled by derive, each set after its Result.
     """
 
     key: str
@@ -67,6 +69,7 @@ class Memoir:
     cost: float = 1.0
     kernels: bool = True
     swing_correction: str | None = None
+    figures: tuple = ()
 
     @property
     def specs(self) -> tuple[Spec, ...]:

@@ -19,8 +19,9 @@ from typing import Callable, Mapping
 
 import sympy as sp
 
-from . import cache, keys, pipeline, registry, schedule
+from . import cache, figure, keys, pipeline, registry, schedule
 from .emit import files, kernels as kn, latex
+from .emit.kernels.compile import emitted_py
 from .io import content_hash, write_atomic
 from .result import Result, Spec
 
@@ -307,8 +308,42 @@ def within_bound(k: kn.Kernel) -> bool:
     return bool(accs) and all(a.max_scaled <= kn.BOUND for a in accs)
 
 
+# ----------------------------------------------------------------- figures
+def _figure_job(job) -> figure.Plot:
+    fig, results, ks, key = job
+    drawn = {k.result_id: (emitted_py(k.name, k.args, k.expr, k.domain), [a.name for a in k.args]) for k in ks}
+    return cache.memo(key, functools.partial(figure.sample, fig, results, drawn))
+
+
+def sample_figures(pl: Plan, built: Mapping[str, Result], formed: dict[str, list], log: Log) -> dict[str, list]:
+    """Each memoir's figures, sampled (cached under :func:`pendsym.figure.figure_key`; the kernels drawn
+    are those emitted, within the bound): {memoir: [(Figure, Plot)]}."""
+    start = time.monotonic()
+    jobs, fresh = {}, []
+    roots = ("pendsym", *registry.packages())
+    for memoir in pl.memoirs:
+        emitted = {k.result_id: k for k in formed.get(memoir, []) if within_bound(k)}
+        for fig in registry.memoir(memoir).figures:
+            if not all(i in built for i in fig.cites):
+                continue
+            ks = [emitted[c.result] for c in fig.curves if c.source == "kernel" and c.result in emitted]
+            key = figure.figure_key(fig, pl.keys, {k.result_id: sp.srepr(k.expr) for k in ks}, roots)
+            if cache.load(key) is cache.MISSING:
+                fresh.append(fig.id)
+            jobs[fig.id] = (fig, {i: built[i] for i in fig.cites}, ks, key)
+    plots = dict(zip(jobs, schedule.per_result(jobs, list(jobs), _figure_job)))
+    if jobs:
+        log(f"sampled {len(jobs)} figures ({len(fresh)} anew) in {time.monotonic() - start:.0f} s"
+            + (": " + ", ".join(f"{i} {plots[i].seconds:.1f} s CPU" for i in fresh) if fresh else ""))
+    out: dict[str, list] = {m: [] for m in pl.memoirs}
+    for fig, *_ in jobs.values():
+        out[fig.memoir].append((fig, plots[fig.id]))
+    return out
+
+
 # ----------------------------------------------------------------- emit and write
-def emit(pl: Plan, records: list[pipeline.Record], formed: dict[str, list], out: Path, log: Log) -> dict[Path, str]:
+def emit(pl: Plan, records: list[pipeline.Record], formed: dict[str, list], out: Path, log: Log,
+         figures: Mapping[str, list] | None = None) -> dict[Path, str]:
     """Every generated file's text: per memoir its kernels (those within the bound), its report;
     the memoir-independent swing-time kernels; results.json."""
     texts: dict[Path, str] = {}
@@ -328,7 +363,7 @@ def emit(pl: Plan, records: list[pipeline.Record], formed: dict[str, list], out:
             out / "c" / f"{memoir}.c": files.c_source(memoir, ks),
             out / "c" / f"{memoir}.h": files.c_header(memoir, ks),
             out / "tex" / f"{memoir}.tex": latex.report(memoir, m.title, recs, ks, bench_input(out, memoir),
-                                                       headings, held),
+                                                       headings, held, figures=(figures or {}).get(memoir, ())),
         })
     texts.update(pendulum_kernels(out))
     texts[out / "results.json"] = pipeline.results_json(records, names)

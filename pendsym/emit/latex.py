@@ -12,6 +12,7 @@ from typing import Sequence
 
 import sympy as sp
 
+from .figures import figure_tex
 from .files import render
 from .kernels import Kernel
 from .mathtex import abbreviation_names, display, tex_expr
@@ -158,13 +159,17 @@ def _kernels(kernels: Sequence[Kernel]) -> list[dict]:
 
 
 def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel], bench: str | None,
-           sections: Sequence[tuple[str, str]], withheld: Sequence = (), swing_correction: bool | None = None) -> str:
+           sections: Sequence[tuple[str, str]], withheld: Sequence = (), swing_correction: bool | None = None,
+           figures: Sequence = ()) -> str:
     """The report's LaTeX text.  sections: (paragraph range such as "18-20" or a tuple of ids, heading).
     ``swing_correction``: whether the memoir has a speed-against-error bench (``make bench``);
-    by default, whether its Memoir declares a swing correction."""
+    by default, whether its Memoir declares a swing correction.  ``figures``: (Figure, Plot) pairs, each
+    set after the Result it names (:attr:`pendsym.figure.Figure.place`)."""
     if swing_correction is None:
         swing_correction = _has_swing_correction(memoir)
     items = [_item(rec) for rec in records]
+    for it in items:
+        it["figures"] = [(f, p) for f, p in figures if f.place == it["id"]]
     groups, placed = [], set()
     for selector, heading in sections:
         members = [it for it in items if _selected(it, selector) and it["id"] not in placed]
@@ -173,6 +178,14 @@ def report(memoir: str, title: str, records: Sequence, kernels: Sequence[Kernel]
     rest = [it for it in items if it["id"] not in placed]
     if rest:
         groups.append({"heading": "Other results", "items": rest})
+    number = 0
+    for g in groups:                       # figures numbered in the order they appear
+        for it in g["items"]:
+            texts = []
+            for fig, plot in it["figures"]:
+                number += 1
+                texts.append(figure_tex(fig, plot, number))
+            it["figures"] = texts
     disc = []
     for rec, it in zip(records, items):
         if rec.status == "discrepancy":
