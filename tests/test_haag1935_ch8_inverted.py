@@ -43,3 +43,18 @@ def test_existence_iff_accepts_the_potential_coefficients_and_refuses_a_wrong_si
 def test_potential_coefficients_are_beta1_and_a_plus_w_lambda():
     from derivations.haag1935.symbols import a, beta1, wl
     assert derivation.potential_coefficients(None) == sp.Tuple(beta1, a + wl)
+
+
+def test_upper_ends_of_the_windows_are_the_zeros_of_the_transverse_stiffness():
+    """(309) as a → −∞: S00 = 1/β1 of the direct inverted blade vanishes at π and 3π."""
+    with mp.workdps(30):
+        assert abs(truth.far_upper_end("9.42", 30) - 3 * mp.pi) < mp.mpf("1e-25")
+        assert abs(truth.far_upper_end("3.14", 30) - mp.pi) < mp.mpf("1e-25")
+
+
+def test_window_signs_accept_the_derived_windows_and_refuse_shifted_ones():
+    from types import SimpleNamespace
+    right = SimpleNamespace(derived_value=derivation.windows_309(None))
+    shifted = SimpleNamespace(derived_value=sp.Tuple(2 * derivation.x1_of_308(), 3 * sp.pi, 2 * sp.pi))
+    assert truth.WindowSigns()(right, "quick").passed
+    assert not truth.WindowSigns()(shifted, "quick").passed    # u = 3 … 5 would be claimed stable

@@ -21,12 +21,13 @@ from types import ModuleType
 
 from pendsym.result import Spec
 
-from . import table_foci_period, table_vibration_flexion
+from . import table_blow_isochronism, table_foci_period, table_vibration_flexion
 
 SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (table_foci_period, "Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)"),
     (table_vibration_flexion, "Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion "
                               "(224)–(240)"),
+    (table_blow_isochronism, "Chapter VI. The short blade: fatigue after a blow, isochronism (233)–(245)"),
 )
 
 

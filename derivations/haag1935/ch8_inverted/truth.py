@@ -141,3 +141,51 @@ def largest_weight(dps: int = 30) -> checks.Values:
                            weight(dps_))
     return checks.Values(truth=f"{truth.MODEL}; the u where a1 of the inverted uniform blade vanishes (findroot), "
                                "mg = EIu²/λ² (156)", points=points, confirm=lambda dps_: {"mg": weight(dps_)})
+
+
+# ---------------------------------------------------------------- n°101: the windows of stability (309)
+def transverse_stiffness(u_value, dps: int = 30) -> mp.mpf:
+    """S00 = ∂Y/∂β of the directly solved inverted blade (= 1/β1): det K/((mg)²a) → S00 as a → −∞."""
+    sus = direct_at(u_value, dps)
+    with mp.workdps(sus.wdps):
+        return sus.stiffness[0, 0]
+
+
+def far_upper_end(guess: str, dps: int = 30) -> mp.mpf:
+    """The upper end of a window as a → −∞: det K = (mg)²[S00(S11 + a) − S01S10], so that the u where the slow
+    n² crosses zero tends to the zero of S00 (β1 → ∞ changes sign); found by findroot on S00."""
+    with mp.workdps(dps + 10):
+        return mp.findroot(lambda x: transverse_stiffness(x, dps), (mp.mpf(guess) - mp.mpf("0.01"),
+                                                                    mp.mpf(guess) + mp.mpf("0.01")), solver="secant")
+
+
+WINDOW_SAMPLES = ("2", "3", "5", "8.5", "9.2", "9.6", "13")     # u = λ√(mg/EI): weight ratios mg/P = (2u/π)²
+FAR_BELOW = "-1"                                                # a − a1 (m): a far below its critical value
+
+
+@dataclass(frozen=True)
+class WindowSigns:
+    """(309): at weight ratios u inside and outside the derived windows (0, π) ∪ (2x1, 3π), with a = a1(u) − 1 m
+    (so that a + wλ < 0, (305)), both n² of the eigenproblem (g < 0) are positive if and only if u lies in a
+    window.  Custom: an equivalence of signs at points of the model."""
+
+    def __call__(self, result, level: str) -> Evidence:
+        lower_1, upper_1, upper_0 = (mp.mpf(sp.N(part, 40)) for part in result.derived_value)
+        ok, notes, kinds = True, [], set()
+        for text in WINDOW_SAMPLES:
+            x = mp.mpf(text)
+            sus = direct_at(x, 30)
+            with mp.workdps(sus.wdps):
+                a = truth.critical_distance(sus) + mp.mpf(FAR_BELOW)
+                n2 = [value for value, _ in truth.eigenmodes(sus, a, truth.R_VALUE, -mp.mpf(truth.G_VALUE))]
+            stable = min(n2) > 0
+            inside = bool(x < upper_0 or lower_1 < x < upper_1)
+            ok &= stable == inside
+            kinds.add(stable)
+            notes.append(f"u = {text}: n² = {mp.nstr(min(n2), 4)}, {mp.nstr(max(n2), 4)}, "
+                         f"{'inside' if inside else 'outside'} the windows")
+        ok &= kinds == {True, False}
+        return Evidence(kind="inequality", passed=bool(ok),
+                        truth=f"{truth.MODEL}: the signs of both n² (g < 0, a = a1 − 1 m) at weight ratios u "
+                              f"{', '.join(WINDOW_SAMPLES)} against the derived windows",
+                        note="; ".join(notes))
