@@ -67,7 +67,7 @@ def theta_234_g(deps) -> sp.Expr:
     n2p = d(deps, 225, "np2")
     n2p = sp.limit(n2p * R**2, R, 0) / R**2
     expr = d(deps, 234, "Theta").subs(n_parasitic, sp.sqrt(n2p.subs(beta1, beta1_positive)))
-    return sp.simplify(expr.subs(beta1, beta1_positive)).subs(beta1_positive, beta1)
+    return sp.simplify(expr.subs(beta1, beta1_positive))
 
 
 # ---------------------------------------------------------------- n°79: (242)–(245)
@@ -113,8 +113,11 @@ def exponentially_small_dropped(expr: sp.Expr) -> sp.Expr:
     """expr with th(u/2) = (1 − q)/(1 + q), q = e^{−u}, at q = 0 (the thin blade, u > 4: the terms in e^{−u}
     are dropped, the powers of 1/u kept)."""
     q = sp.Symbol("q", positive=True)
-    expr = sp.sympify(expr).rewrite(sp.tanh).subs(sp.tanh(u / 2), (1 - q) / (1 + q))
-    if expr.has(sp.exp(u)) or expr.has(sp.tanh):
+    half = (1 - q) / (1 + q)                       # th(u/2)
+    table = {sp.tanh(u / 2): half, sp.tanh(u): 2 * half / (1 + half**2), sp.sinh(u): 2 * half / (1 - half**2),
+             sp.cosh(u): (1 + half**2) / (1 - half**2)}
+    expr = sp.sympify(expr).subs(table)
+    if expr.has(sp.tanh, sp.sinh, sp.cosh, sp.exp):
         raise ValueError("a hyperbolic function of u is left")
     return sp.expand(sp.limit(expr, q, 0))
 

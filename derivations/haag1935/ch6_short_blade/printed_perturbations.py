@@ -7,7 +7,7 @@ import sympy as sp
 from pendsym.result import Reading
 
 from ..ch3_uniform.launch_symbols import V, m, m_striking, n_parasitic, restitution, stress_scale
-from ..symbols import U, U1, U2, R, a, b, beta1, g, lam, u, v0, w0, z
+from ..symbols import DEFS, U, U1, U2, R, a, b, beta1, beta1_positive, g, lam, u, v0, w0, z
 from .derivation_perturbations import F_HAAG, THETA, theta_0
 from .expansion import F_2
 
@@ -25,10 +25,11 @@ def theta_234():
 
 
 def theta_234_g():
-    return U * R * (a + z - b) / sp.sqrt(beta1 * g)
+    return U * R * (a + z - b) / sp.sqrt(beta1_positive * g)
 
 
-THETA_DEFINITION = ((THETA, theta_234()),)
+# the defs are applied simultaneously: Θ's own U is written th(u/2) here
+THETA_DEFINITION = ((THETA, theta_234().subs(dict(DEFS))),)
 
 
 # ---------------------------------------------------------------- n°79: (242)–(245)
