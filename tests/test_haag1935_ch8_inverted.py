@@ -58,3 +58,31 @@ def test_window_signs_accept_the_derived_windows_and_refuse_shifted_ones():
     shifted = SimpleNamespace(derived_value=sp.Tuple(2 * derivation.x1_of_308(), 3 * sp.pi, 2 * sp.pi))
     assert truth.WindowSigns()(right, "quick").passed
     assert not truth.WindowSigns()(shifted, "quick").passed    # u = 3 … 5 would be claimed stable
+
+
+def test_mode_signs_accept_302_and_refuse_the_swapped_signs():
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import K, K_prime
+    assert truth.NegativeIffExists("K, −K'")(SimpleNamespace(derived_value=sp.Tuple(K, -K_prime)), "quick").passed
+    assert not truth.NegativeIffExists("−K, K'")(SimpleNamespace(derived_value=sp.Tuple(-K, K_prime)), "quick").passed
+
+
+def test_303_is_necessary_but_not_sufficient():
+    """With β1 > 0 and a + wλ > 0 (u = 6, a > a1) both n² are negative while (303) holds: only the implication."""
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import a, vl, z, zp
+    claim = SimpleNamespace(derived_value=sp.Tuple(a + zp - vl, -(a + z - vl)))
+    assert truth.NegativeIffExists("(303)", iff=False)(claim, "quick").passed
+    assert not truth.NegativeIffExists("(303)", iff=True)(claim, "quick").passed
+
+
+def test_306_and_308_refuse_the_opposite_sign():
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import u, wl
+    assert truth.PositiveDistanceIff()(SimpleNamespace(derived_value=wl), "quick").passed
+    assert not truth.PositiveDistanceIff()(SimpleNamespace(derived_value=-wl), "quick").passed
+    assert truth.PositiveIffStable()(SimpleNamespace(derived_value=sp.tan(u / 2) - u / 2), "quick").passed
+    assert not truth.PositiveIffStable()(SimpleNamespace(derived_value=u / 2 - sp.tan(u / 2)), "quick").passed
