@@ -53,3 +53,16 @@ def test_the_exact_isochronism_ratio_tends_to_one():
     env = truth.state("uniform", truth.FIXED, "1e-3", 20)
     env = {**env, **truth_perturbations.isochronism_inputs(env, "uniform", 20)}
     assert abs(truth_perturbations.exact_ratio(env) - 1) < 1e-2
+
+
+def test_241_is_the_rigid_axis_limit_of_104():
+    from derivations.haag1935.ch2_common import J, eps1, eps2, eps3, eps_lambda
+    from derivations.haag1935.symbols import K, Y, a, beta1, theta, vl, wl, zp
+    E1, E2 = sp.symbols("E_1 E_2")
+    bracket = (E1 * K + E2 + K * Y * eps1 * J(2, 0) + K * eps1 * theta * J(1, 1) + Y * eps1 * J(1, 1)
+               + a * eps1 * theta + eps1 * theta * J(0, 2) + eps2 * zp - eps3 - eps_lambda)
+    deps = {"haag1935.eq216.K": Built(1 + (vl + wl) / a), "haag1935.eq215.zp": Built(-a + vl - beta1)}
+    deps["haag1935.eq104.f"] = Built(bracket)
+    assert sp.simplify(derivation.f_241(deps) - printed.f_241()) == 0
+    deps["haag1935.eq104.f"] = Built(bracket - eps2 * zp)
+    assert sp.simplify(derivation.f_241(deps) - printed.f_241()) != 0

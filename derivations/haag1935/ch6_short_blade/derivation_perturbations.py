@@ -125,3 +125,20 @@ def exponentially_small_dropped(expr: sp.Expr) -> sp.Expr:
 def dT_245(deps) -> sp.Expr:
     """(245): (244) for u > 4, the terms in e^{−u} dropped."""
     return exponentially_small_dropped(d(deps, 244, "dT"))
+
+
+# ---------------------------------------------------------------- n°78: (241)
+def f_241(deps) -> sp.Expr:
+    """(241): f = −(n²/K)[bracket of (104)] for a perturbation proper (forces on the pendulum only: no increment
+    ε(s) of the blade's moment, so E_1 = E_2 = ε_λ = 0), K of (216), z' of (215), R = 0, the blade's moments
+    J(i, j) = ∫φ1^iφ2^j ds counted as lengths of the blade: the leading term in λ/a ("en négligeant λ devant a")."""
+    from ..ch2_common import J, eps_lambda
+    from ..symbols import n_squared
+    from .expansion import DELTA
+    bracket = d(deps, 104, "f").subs({sp.Symbol("E_1"): 0, sp.Symbol("E_2"): 0, eps_lambda: 0})
+    moments = sorted(bracket.atoms(J), key=sp.default_sort_key)
+    bracket = bracket.subs({moment: DELTA * moment for moment in moments}, simultaneous=True)
+    bracket = bracket.subs({K: d(deps, 216, "K"), zp: d(deps, 215, "zp")}, simultaneous=True).subs(R, 0)
+    f = -n_squared / K * bracket
+    f = f.subs(K, d(deps, 216, "K").subs(R, 0))
+    return sp.expand(leading(f).subs(DELTA, 1))

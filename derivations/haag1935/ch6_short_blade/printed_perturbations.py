@@ -48,3 +48,10 @@ def dT_244():
 
 def dT_245():
     return theta_0**2 / 16 * (1 - 7 * lam / (4 * a * u))
+
+
+# ---------------------------------------------------------------- n°78: (241)
+def f_241():
+    from ..ch2_common import eps1, eps2, eps3
+    from ..symbols import n_squared, theta
+    return n_squared * (a * eps2 - a * eps1 * theta + eps3)

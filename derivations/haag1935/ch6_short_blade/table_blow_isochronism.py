@@ -1,5 +1,5 @@
-"""Haag 1935, chapter VI, n°74 and n°78–79: the fatigue after a blow (233)–(234) and the isochronism error
-of the short blade (242)–(245)."""
+"""Haag 1935, chapter VI, n°74 and n°78–79: the fatigue after a blow (233)–(234), the perturbing acceleration
+(241) and the isochronism error of the short blade (242)–(245)."""
 from __future__ import annotations
 
 from pendsym import checks
@@ -34,6 +34,13 @@ def specs() -> tuple[Spec, ...]:
              check=truth.blow_order("uniform", "T0", family=truth.FIXED, over=truth.shock_factor),
              note="n'² of (225) with l = a: R² neglected before a² (the factor √(a/l) dropped), so that the check "
                   "keeps R fixed while a grows."),
+        # ------------------------------------------------------------ n°78
+        Spec(rid(241, "f"), "f = n²(aε2 − aε1θ + ε3), a perturbation proper", src(78, "241"), "f",
+             derivation.f_241, deps=(rid(104, "f"), rid(216, "K"), rid(215, "zp")), printed=printed.f_241,
+             check=checks.All((truth.perturbation_order("tapered"), truth.perturbation_order("uniform"))),
+             note="(104) with no increment of the blade's moment (E_1 = E_2 = ε_λ = 0: forces on the pendulum only), "
+                  "K → 1, z' → −a, the blade's moments J(i, j) = O(λ) dropped: the rigid axis. The truth is (104) "
+                  "itself at the exact modes: it judges the step, not (104)."),
         # ------------------------------------------------------------ n°79
         Spec(rid(242, "ratio"), "Q'/Q = 1 + (−5λ + 5v_0 − w_0 + 8F_2 − F)/a", src(79, "242"), "Q'/Q",
              derivation.ratio_242, deps=(rid(112, "Qp"), rid(110, "F"), rid(216, "K"), rid(215, "zp"), rid(221, "Q"),

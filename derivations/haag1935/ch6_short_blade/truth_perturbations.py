@@ -139,3 +139,32 @@ def thin_isochronism() -> checks.Order:
                                    "(pendsym.blade: v_0, w_0; F_2, F_3, F_4 of (79) at K = 1 by quadrature), "
                                    "λ/a = 1/10, θ0 = 1, u = 5 … 12",
                         params=(("lambda", "0.1"), ("lambda/a", "0.1")))
+
+
+# ---------------------------------------------------------------- n°78: the perturbing acceleration (241)
+PERTURBATION = {"epsilon_1": "0.3", "epsilon_2": "0.2", "epsilon_3": "0.1", "theta": "0.1"}
+EXACT_104 = ("f = −(n²/K)[ε2z' + aθε1 − ε3 + ε1(KYJ(2,0) + (Kθ + Y)J(1,1) + θJ(0,2))] ((104) for forces on the "
+             "pendulum only, checked in chapter II through (111)–(112)) at the exact modes (K = −n²z'/g, z', n²), "
+             "Y = Kθ, J(i, j) = ∫φ1^iφ2^j ds by quadrature on the shot blade")
+
+
+def perturbation_inputs(env, name, dps):
+    values = {key: mp.mpf(text) for key, text in PERTURBATION.items()}
+    sol = shot(name, dps)
+    with mp.workdps(dps + 10):
+        for i, j in ((2, 0), (1, 1), (0, 2)):
+            values[f"J{i}{j}"] = sol.integrate(lambda s, i=i, j=j: (lambda st: (1 + st[1]) ** i * st[3] ** j)(sol.state(s)))
+    return values
+
+
+def exact_perturbation(env):
+    K, theta, e1 = env["K"], env["theta"], env["epsilon_1"]
+    Y = K * theta
+    bracket = (env["epsilon_2"] * env["z'"] + env["a"] * theta * e1 - env["epsilon_3"]
+               + e1 * (K * Y * env["J20"] + (K * theta + Y) * env["J11"] + theta * env["J02"]))
+    return -env["n^2"] / K * bracket
+
+
+def perturbation_order(name: str) -> checks.Order:
+    return order(exact_perturbation, exact_perturbation, 1, f"{EXACT_104}; {PERTURBATION} (relative residual)",
+                 name=name, family=FIXED, inputs=perturbation_inputs)
