@@ -66,3 +66,17 @@ def test_241_is_the_rigid_axis_limit_of_104():
     assert sp.simplify(derivation.f_241(deps) - printed.f_241()) == 0
     deps["haag1935.eq104.f"] = Built(bracket - eps2 * zp)
     assert sp.simplify(derivation.f_241(deps) - printed.f_241()) != 0
+
+
+def test_le_rollands_isochronism_fails_the_thin_check_that_245_passes():
+    """The footnote of n°79: Le Rolland's −(θ0²/16)(λ/a)(1 − 2U/u) does not tend to the simple pendulum of length
+    a + λ; the check of (245) refuses it (its residual does not vanish as u → ∞) and accepts (245)."""
+    from derivations.haag1935.ch6_short_blade import table_blow_isochronism
+    from derivations.haag1935.symbols import U, a
+    from pendsym import checks
+    from pendsym.result import Result
+    spec = next(s for s in table_blow_isochronism.specs() if s.id == "haag1935.eq245.dT")
+    theta_0 = derivation.theta_0
+    le_rolland = (theta_0**2 / 16 - theta_0**2 / 16 * lam / a * (1 - 2 * U / u)).subs(dict(DEFS))
+    assert not checks.run(spec.check, Result(spec, le_rolland), "quick").passed
+    assert checks.run(spec.check, Result(spec, printed.dT_245()), "quick").passed
