@@ -46,6 +46,11 @@ def test_isochronism_from_the_direct_energies():
     deps[f"{P}.eq195.acceleration"] = Built(derivation.perturbing_acceleration(deps))
     assert sp.simplify(derivation.isochronism(deps) - printed.isochronism()) == 0
     assert sp.simplify(deps[f"{P}.eq194.equation"].derived - printed.reduced_equation()) == 0
+    # (195): the text's letter n² is the linear pulsation of (194); with it the forms agree, without it they do not
+    acceleration = deps[f"{P}.eq195.acceleration"].derived
+    with_n2 = printed.perturbing_acceleration().subs(dict(printed.LINEAR_N2))
+    assert sp.simplify(acceleration - with_n2) == 0
+    assert sp.simplify(acceleration - printed.perturbing_acceleration()) != 0
 
 
 def test_the_heavy_thread_inertia_carries_K_cubed():
@@ -63,7 +68,7 @@ def built():
 @pytest.mark.slow
 @pytest.mark.parametrize("rid", ["eq184.ends", "eq184.F", "eq185.I_J", "eq186.T", "eq188.T", "eq189.U",
                                  "eq190.motion", "eq191.combination", "eq193.K", "eq192.dT", "eq192.G",
-                                 "eq193.end_stresses", "eq194.T4", "eq194.U4", "eq196.dT", "eq136.thread_dT",
+                                 "eq193.end_stresses", "eq194.T4", "eq194.U4", "eq195.acceleration", "eq196.dT", "eq136.thread_dT",
                                  "eq184.along", "eq193.shape", "eq192.footnote", "eq197.Q", "eq192.from_58", "eq192.from_44"])
 def test_printed_matches_derived(built, rid):
     r = built[f"{P}.{rid}"]

@@ -43,3 +43,46 @@ def test_existence_iff_accepts_the_potential_coefficients_and_refuses_a_wrong_si
 def test_potential_coefficients_are_beta1_and_a_plus_w_lambda():
     from derivations.haag1935.symbols import a, beta1, wl
     assert derivation.potential_coefficients(None) == sp.Tuple(beta1, a + wl)
+
+
+def test_upper_ends_of_the_windows_are_the_zeros_of_the_transverse_stiffness():
+    """(309) as a → −∞: S00 = 1/β1 of the direct inverted blade vanishes at π and 3π."""
+    with mp.workdps(30):
+        assert abs(truth.far_upper_end("9.42", 30) - 3 * mp.pi) < mp.mpf("1e-25")
+        assert abs(truth.far_upper_end("3.14", 30) - mp.pi) < mp.mpf("1e-25")
+
+
+def test_window_signs_accept_the_derived_windows_and_refuse_shifted_ones():
+    from types import SimpleNamespace
+    right = SimpleNamespace(derived_value=derivation.windows_309(None))
+    shifted = SimpleNamespace(derived_value=sp.Tuple(2 * derivation.x1_of_308(), 3 * sp.pi, 2 * sp.pi))
+    assert truth.WindowSigns()(right, "quick").passed
+    assert not truth.WindowSigns()(shifted, "quick").passed    # u = 3 … 5 would be claimed stable
+
+
+def test_mode_signs_accept_302_and_refuse_the_swapped_signs():
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import K, K_prime
+    assert truth.NegativeIffExists("K, −K'")(SimpleNamespace(derived_value=sp.Tuple(K, -K_prime)), "quick").passed
+    assert not truth.NegativeIffExists("−K, K'")(SimpleNamespace(derived_value=sp.Tuple(-K, K_prime)), "quick").passed
+
+
+def test_303_is_necessary_but_not_sufficient():
+    """With β1 > 0 and a + wλ > 0 (u = 6, a > a1) both n² are negative while (303) holds: only the implication."""
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import a, vl, z, zp
+    claim = SimpleNamespace(derived_value=sp.Tuple(a + zp - vl, -(a + z - vl)))
+    assert truth.NegativeIffExists("(303)", iff=False)(claim, "quick").passed
+    assert not truth.NegativeIffExists("(303)", iff=True)(claim, "quick").passed
+
+
+def test_306_and_308_refuse_the_opposite_sign():
+    from types import SimpleNamespace
+
+    from derivations.haag1935.symbols import u, wl
+    assert truth.PositiveDistanceIff()(SimpleNamespace(derived_value=wl), "quick").passed
+    assert not truth.PositiveDistanceIff()(SimpleNamespace(derived_value=-wl), "quick").passed
+    assert truth.PositiveIffStable()(SimpleNamespace(derived_value=sp.tan(u / 2) - u / 2), "quick").passed
+    assert not truth.PositiveIffStable()(SimpleNamespace(derived_value=u / 2 - sp.tan(u / 2)), "quick").passed

@@ -70,6 +70,7 @@ HEADINGS = (
     ("Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)", _eqs(212, 223, CHAPTER_6)),
     ("Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion (224)–(240)",
      _eqs(224, 240, CHAPTER_6)),
+    ("Chapter VI. The short blade: perturbations, the isochronism error (241)–(254)", _eqs(241, 254, CHAPTER_6)),
     ("Chapter VII. The gravity pendulum with direct suspension (255)–(285), n°82–93", _eqs(0, 999, CHAPTER_7)),
     ("Chapter VIII. The inverted blade (302)–(317), n°100–103", _eqs(0, 999, CHAPTER_8)),
     ("Chapter IX. The rectangular hole (321)–(333)", _eqs(321, 333, CHAPTER_9)),

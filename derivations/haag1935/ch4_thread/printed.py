@@ -102,6 +102,10 @@ def reduced_equation():
             - (-g * (a + lam * K**2) * theta + g / 6 * (a + lam * K**4) * theta**3))
 
 
+# n² of (195): the pulsation of the linear part of (194), g(a + λK²)/[R² + (a + λK)²] ((34) for the thread)
+LINEAR_N2 = ((sp.Symbol("n^2", positive=True), g * (a + lam * K**2) / ((a + lam * K) ** 2 + R**2)),)
+
+
 def perturbing_acceleration():
     n2 = sp.Symbol("n^2", positive=True)
     return ((a * lam * K * (1 - K) ** 2 * theta * theta_dot**2 + g / 6 * (a + lam * K**4) * theta**3

@@ -128,8 +128,10 @@ def specs() -> tuple[Spec, ...]:
              check=checks.Chain((rid(196, "dT"),))),
         Spec(rid(195, "acceleration"), "Perturbing acceleration of the isochronism", src(N60, "195"),
              r"\Delta\theta''", derivation.perturbing_acceleration, deps=(rid(194, "equation"),),
-             printed=printed.perturbing_acceleration, check=checks.Chain((rid(196, "dT"),)),
-             note="n² = g(a + λK²)/[R² + (a + λK)²] (194) in both forms."),
+             printed=printed.perturbing_acceleration, defs=printed.LINEAR_N2, check=checks.Chain((rid(196, "dT"),)),
+             note="n² = g(a + λK²)/[R² + (a + λK)²], the frequency of the linear part of (194), in both forms: the "
+                  "derivation substitutes it, the text keeps the letter n². Without that definition the forms "
+                  "differed by Kaλθ³(K − 1)²[n²(R² + (a + λK)²) − g(a + λK²)]/(R² + (a + λK)²)², zero for that n²."),
         Spec(rid(196, "dT"), "Isochronism error of the thread pendulum", src(N60, "196"), r"\Delta T/T",
              derivation.isochronism, deps=(rid(195, "acceleration"),), printed=printed.isochronism,
              check=truth.isochronism_check()),

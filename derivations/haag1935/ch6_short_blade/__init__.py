@@ -1,4 +1,4 @@
-"""Haag 1935, chapter VI: the short blade (λ/a small), n°68–77, eqs. (212)–(240).
+"""Haag 1935, chapter VI: the short blade (λ/a small), n°68–79, eqs. (212)–(245).
 
 The section keeps its jobs apart:
 
@@ -12,8 +12,11 @@ The section keeps its jobs apart:
 * :mod:`.kernels`: the kernel of Δl (220);
 * the Result tables, one per group of paragraphs, which join them.
 
-Not built yet: (230), (231), (233), (234) of n°73–74 (the fatigue with B placed by (67), and after a
-blow) and n°78–81, eqs. (241)–(254) (the perturbations, which specialise chapter II).
+n°74 and n°78–79 ((233)–(234), (241)–(245)) are in :mod:`.derivation_perturbations`,
+:mod:`.printed_perturbations`, :mod:`.truth_perturbations` and :mod:`.table_blow_isochronism`.
+
+Not built yet: n°80–81, eqs. (246)–(254) (the clamping errors, the inertia and weight of the blade), which
+specialise chapter II's (117), (127), (132)–(136), not yet Results.
 """
 from __future__ import annotations
 
@@ -21,12 +24,13 @@ from types import ModuleType
 
 from pendsym.result import Spec
 
-from . import table_foci_period, table_vibration_flexion
+from . import table_blow_isochronism, table_foci_period, table_vibration_flexion
 
 SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (table_foci_period, "Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)"),
     (table_vibration_flexion, "Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion "
                               "(224)–(240)"),
+    (table_blow_isochronism, "Chapter VI. The short blade: fatigue after a blow, isochronism (233)–(245)"),
 )
 
 

@@ -104,3 +104,58 @@ def shape_316(deps) -> sp.Expr:
 def fatigue_inverted(deps) -> sp.Expr:
     """n°103 after (316): (280) with u → iu (M = λ²/u² → −λ²/u² and w → w(iu) together)."""
     return rotated(derived_of(deps, 280, "fatigue"))
+
+
+# ---------------------------------------------------------------- n°100: (302), (303), (306); n°101: (308); (312)
+def signs_302(deps) -> sp.Tuple:
+    """(302): (34) n² = −Kg/z' (its derived form over K of (35) is −g/z') and n'² = −K'g/z, with g → −g, give
+    K = n²z'/g, K' = n'²z/g; the foci satisfy
+    zz' = −R² ((30): its constant term), z' < z, so z' = −R²/z with z > 0: SymPy finds K < 0 and K' > 0 for
+    n², n'², g, z, R > 0.  Returned as the claim (K, −K'), both negative."""
+    from ..symbols import K, K_prime, R, g, n_squared, z, zp
+    n2_fast, z_positive = sp.Symbol("n'^2", positive=True), sp.Symbol("z", positive=True)
+    product = sp.expand(derived_of(deps, 30, "quadratic").subs(z, 0))          # zz' = this constant
+    if sp.simplify(product + R**2) != 0:
+        raise ValueError("the product of the foci is not −R²")
+    n2_over_K = sp.simplify(derived_of(deps, 34, "n2") / derived_of(deps, 35, "K"))         # −g/z'
+    if n2_over_K.has(a):
+        raise ValueError(f"n²/K = {n2_over_K} is not −g/z'")
+    K_value = n_squared / n2_over_K.subs(g, -g)                                              # n²z'/g
+    K_prime_value = K_value.subs({zp: z_positive, n_squared: n2_fast}, simultaneous=True)
+    K_value = K_value.subs(zp, -R**2 / z_positive)
+    if not (K_value.is_negative and K_prime_value.is_positive):
+        raise ValueError(f"the signs of K = {K_value}, K' = {K_prime_value} are not (302)")
+    return sp.Tuple(K, -K_prime)
+
+
+def signs_303(deps) -> sp.Tuple:
+    """(303): K = (a + wλ)/(a + z − vλ) (36) and K' the same with z ↔ z' (n°8): KK' < 0 (302) makes
+    a + z − vλ and a + z' − vλ of opposite signs, the smaller (z' < z) negative.  Returned as
+    (a + z' − vλ, −(a + z − vλ)), both negative."""
+    from ..symbols import K, z, zp
+    K_value = derived_of(deps, 36, "K")
+    K_prime_value = K_value.subs({z: zp}, simultaneous=True)
+    denominators = sp.denom(sp.together(K_value)), sp.denom(sp.together(K_prime_value))
+    numerators = sp.numer(sp.together(K_value)), sp.numer(sp.together(K_prime_value))
+    if sp.simplify(numerators[0] - numerators[1]) != 0:
+        raise ValueError("K and K' of (36) do not share their numerator")
+    return sp.Tuple(denominators[1], -denominators[0])
+
+
+def sign_306(deps) -> sp.Expr:
+    """(306): (305) a + wλ < 0 with a > 0 requires wλ < −a < 0: the quantity wλ, claimed negative."""
+    existence = derived_of(deps, 304, "existence")
+    second = existence[1]
+    if sp.simplify(second - (a + wl)) != 0:
+        raise ValueError("(305) is not a + wλ < 0")
+    return second.subs(a, 0)
+
+
+def inequality_308(deps) -> sp.Expr:
+    """(308): (304) β1 < 0 with β1 of (307) (u > 0): −(u/2)β1/λ = tan(u/2) − u/2, claimed positive."""
+    return sp.expand(-u / 2 * derived_of(deps, 307, "beta1") / lam)
+
+
+def distance_312(_deps) -> sp.Expr:
+    """(312): a1 − a = ελ (definition of ε for the inverted blade, (305))."""
+    return eps * lam

@@ -74,3 +74,31 @@ def shape():
 def fatigue():
     """n°103: (280) with ch ωs → cos ωs, sh u → sin u, T → |T|."""
     return theta * sp.sqrt(3 * E * T) * sp.cos(omega * s) / sp.sin(u)
+
+
+# ================================================================ n°100–102: (302), (303), (306), (308), (312)
+def signs_302():
+    """(302) K < 0, K' > 0, written as the quantities claimed negative, (K, −K')."""
+    from ..symbols import K, K_prime
+    return sp.Tuple(K, -K_prime)
+
+
+def signs_303():
+    """(303) a + z' − vλ < 0, a + z − vλ > 0, written (a + z' − vλ, −(a + z − vλ)) < 0."""
+    from ..symbols import vl, z, zp
+    return sp.Tuple(a + zp - vl, -(a + z - vl))
+
+
+def sign_306():
+    return w_lambda
+
+
+def inequality_308():
+    return sp.tan(u / 2) - u / 2
+
+
+def distance_312():
+    return eps * lam
+
+
+READ_NU = Reading("ν_λ, ω_λ (303), (306)", "v_λ, w_λ: the OCR renders v, w as ν, ω")

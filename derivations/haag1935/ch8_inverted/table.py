@@ -39,15 +39,17 @@ def weight_points(level, dps):
     yield checks.Point("(2x1)²/(π/2)²", {}, (end / (mp.pi / 2)) ** 2, component=0)
 
 
-def upper_order(component: int, guess: str) -> checks.Order:
-    """The upper end u*(a) of a window (the slow n² crosses zero at a = a1(u)) tends to (2n + 1)π as
-    λ/|a| → 0, to first order."""
-    def value(p, dps):
-        return truth.upper_end(guess, -mp.mpf("0.1") / mp.mpf(p), dps)
-    return checks.Order(param="lambda/|a|", values=checks.Geometric("1e-4", "1e-2"), truth=value,
-                        at=lambda expr, p: mp.mpf(expr[component].evalf(40)), expected=1,
-                        truth_desc=f"{truth.truth.MODEL}; the u where the slow n² of the inverted uniform blade "
-                                   "crosses zero at a = −λ/p (mpmath findroot)")
+@functools.lru_cache(maxsize=8)
+def upper(guess: str, dps: int) -> mp.mpf:
+    return truth.far_upper_end(guess, dps)
+
+
+def ends_points(level, dps):
+    """The ends of the windows n = 1 and n = 0 from the model: 2x1 where 1/n'² = 0 (β1 = 0), and the upper ends as
+    a → −∞, where S00 = 1/β1 of the direct stiffness vanishes (det K/((mg)²a) → S00)."""
+    yield checks.Point("2x1: 1/n'² = 0", {}, lower(dps), component=0)
+    yield checks.Point("3π: S00 = 0", {}, upper("9.42", dps), component=1)
+    yield checks.Point("π: S00 = 0", {}, upper("3.14", dps), component=2)
 
 
 def values(quantity, what, **kw):
@@ -68,11 +70,15 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(309, "windows"), "windows 2x_n < u < (2n + 1)π: ends 2x1, 3π, π", src(101, "309"),
              r"(2x_1, 3\pi, \pi)", derivation.windows_309, printed=printed.windows,
              defs=((printed.windows()[0].args[1], derivation.x1_of_308()),),
-             # the check of the upper ends (upper_order: their order in λ/|a| as a → −∞) ran over 13 CPU minutes
-             # without ending; until it is cut down, the claim stands unchecked (its lower end is checked by eq309.x1)
-             check=None,
-             note="Not checked yet: the upper ends depend on a and tend to (2n + 1)π only as a → −∞; their order "
-                  "check is too slow as written. The lower end 2x1 is checked through eq309.x1."),
+             check=checks.All((
+                 checks.Values(truth=f"{truth.truth.MODEL}; the lower end where 1/n'² crosses zero, the upper ends "
+                                     "as a → −∞ where S00 = 1/β1 of the direct stiffness vanishes (mpmath findroot)",
+                               points=ends_points, confirm=lambda dps: {"2x1": lower(dps), "3pi": upper("9.42", dps)},
+                               tol="1e-20"),
+                 truth.WindowSigns())),
+             note="The upper end of a window at a fixed a (the slow n² crossing zero at a = a1(u)) tends to (2n + 1)π "
+                  "only as a → −∞: it is checked there, as the zero of S00 (det K = (mg)²[S00(S11 + a) − S01S10]); "
+                  "and the signs of both n² at a = a1 − 1 m are checked at weight ratios inside and outside."),
         Spec(rid(309, "x1"), "x1 ≈ 4,49, x1 − π ≈ 1,35", src(101, None), r"(x_1, x_1 - \pi)", derivation.x1_values,
              printed=printed.x1_numbers, readings=(printed.READ_COMMA,), printed_decimals=(2, 2),
              check=values(x1_points, "x1 = half the lower end of the window n = 1", tol="1e-20"),

@@ -141,3 +141,151 @@ def largest_weight(dps: int = 30) -> checks.Values:
                            weight(dps_))
     return checks.Values(truth=f"{truth.MODEL}; the u where a1 of the inverted uniform blade vanishes (findroot), "
                                "mg = EIu²/λ² (156)", points=points, confirm=lambda dps_: {"mg": weight(dps_)})
+
+
+# ---------------------------------------------------------------- n°101: the windows of stability (309)
+def transverse_stiffness(u_value, dps: int = 30) -> mp.mpf:
+    """S00 = ∂Y/∂β of the directly solved inverted blade (= 1/β1): det K/((mg)²a) → S00 as a → −∞."""
+    sus = direct_at(u_value, dps)
+    with mp.workdps(sus.wdps):
+        return sus.stiffness[0, 0]
+
+
+def far_upper_end(guess: str, dps: int = 30) -> mp.mpf:
+    """The upper end of a window as a → −∞: det K = (mg)²[S00(S11 + a) − S01S10], so that the u where the slow
+    n² crosses zero tends to the zero of S00 (β1 → ∞ changes sign); found by findroot on S00."""
+    with mp.workdps(dps + 10):
+        return mp.findroot(lambda x: transverse_stiffness(x, dps), (mp.mpf(guess) - mp.mpf("0.01"),
+                                                                    mp.mpf(guess) + mp.mpf("0.01")), solver="secant")
+
+
+WINDOW_SAMPLES = ("2", "3", "5", "8.5", "9.2", "9.6", "13")     # u = λ√(mg/EI): weight ratios mg/P = (2u/π)²
+FAR_BELOW = "-1"                                                # a − a1 (m): a far below its critical value
+
+
+@dataclass(frozen=True)
+class WindowSigns:
+    """(309): at weight ratios u inside and outside the derived windows (0, π) ∪ (2x1, 3π), with a = a1(u) − 1 m
+    (so that a + wλ < 0, (305)), both n² of the eigenproblem (g < 0) are positive if and only if u lies in a
+    window.  Custom: an equivalence of signs at points of the model."""
+
+    def __call__(self, result, level: str) -> Evidence:
+        lower_1, upper_1, upper_0 = (mp.mpf(sp.N(part, 40)) for part in result.derived_value)
+        ok, notes, kinds = True, [], set()
+        for text in WINDOW_SAMPLES:
+            x = mp.mpf(text)
+            sus = direct_at(x, 30)
+            with mp.workdps(sus.wdps):
+                a = truth.critical_distance(sus) + mp.mpf(FAR_BELOW)
+                n2 = [value for value, _ in truth.eigenmodes(sus, a, truth.R_VALUE, -mp.mpf(truth.G_VALUE))]
+            stable = min(n2) > 0
+            inside = bool(x < upper_0 or lower_1 < x < upper_1)
+            ok &= stable == inside
+            kinds.add(stable)
+            notes.append(f"u = {text}: n² = {mp.nstr(min(n2), 4)}, {mp.nstr(max(n2), 4)}, "
+                         f"{'inside' if inside else 'outside'} the windows")
+        ok &= kinds == {True, False}
+        return Evidence(kind="inequality", passed=bool(ok),
+                        truth=f"{truth.MODEL}: the signs of both n² (g < 0, a = a1 − 1 m) at weight ratios u "
+                              f"{', '.join(WINDOW_SAMPLES)} against the derived windows",
+                        note="; ".join(notes))
+
+
+# ---------------------------------------------------------------- n°100: the steps (302), (303); (306); (308)
+def mode_env(k: str, offset: str) -> dict:
+    """The inverted blade ``k`` at a = a1 + offset: the shot end values, both modes of the eigenproblem (g < 0)
+    named by their nodes (z' < z: (n², z') and (n'², z)), and K = Y/θ of each mode from the direct stiffness
+    (Y = S00β + S01θ, β = −(a + node)θ), which does not use (34) or (36)."""
+    env = dict(truth.numbers(k, SIGN))
+    sus = truth.direct(k, SIGN, 0)
+    with mp.workdps(sus.wdps):
+        a = env["a_1"] + mp.mpf(offset)
+        modes = sorted(truth.eigenmodes(sus, a, env["R"], env["g"]), key=lambda pair: pair[1])
+        S = sus.stiffness
+        ratios = [S[0, 0] * (-(a + node)) + S[0, 1] for _, node in modes]
+    env.update({"a": a, "n^2": modes[0][0], "z'": modes[0][1], "n'^2": modes[1][0], "z": modes[1][1],
+                "K": ratios[0], "K'": ratios[1], "exists": min(modes[0][0], modes[1][0]) > 0})
+    return env
+
+
+@dataclass(frozen=True)
+class NegativeIffExists:
+    """(302), (303): on the inverted blades and distances of :class:`ExistenceIff`, every component of the
+    derived form (the quantities claimed negative) is negative if (``iff``: and only if) both n² of the
+    eigenproblem are positive.  The env holds the modes' nodes and K = Y/θ from the direct stiffness.  Custom:
+    an implication or equivalence of signs at points of the model."""
+
+    what: str
+    iff: bool = True
+
+    def __call__(self, result, level: str) -> Evidence:
+        ok, notes, kinds = True, [], set()
+        for k in EXISTENCE_BLADES:
+            for offset in EXISTENCE_OFFSETS:
+                env = mode_env(k, offset)
+                with mp.workdps(40):
+                    values = [verify.value_at(part, env) for part in result.derived_value]
+                claimed = all(x < 0 for x in values)
+                ok &= env["exists"] == claimed if self.iff else (claimed or not env["exists"])
+                kinds.add(env["exists"])
+                notes.append(f"{k}, a − a1 = {offset}: n² = {mp.nstr(env['n^2'], 4)}, {mp.nstr(env[FAST], 4)}; "
+                             + ", ".join(mp.nstr(x, 4) for x in values))
+        ok &= kinds == {True, False}
+        return Evidence(kind="inequality", passed=bool(ok),
+                        truth=f"{truth.MODEL}: the signs of both n² (g < 0) against those of {self.what} "
+                              f"({'if and only if' if self.iff else 'implied by the existence'})",
+                        note="; ".join(notes))
+
+
+FAST = "n'^2"
+POSITIVE_A_BLADES = ("u=1", "u=3/2", "u=5/2", "u=46/5", "tapered")
+
+
+@dataclass(frozen=True)
+class PositiveDistanceIff:
+    """(306): on inverted blades with β1 < 0 (304), a pendulum at some a > 0 (a = a1/2 when a1 > 0, else
+    a = 1 mm) has both n² positive if and only if the derived wλ is negative (wλ of the shot blade)."""
+
+    def __call__(self, result, level: str) -> Evidence:
+        ok, notes, kinds = True, [], set()
+        for k in POSITIVE_A_BLADES:
+            env = dict(truth.numbers(k, SIGN))
+            sus = truth.direct(k, SIGN, 0)
+            with mp.workdps(sus.wdps):
+                a = env["a_1"] / 2 if env["a_1"] > 0 else mp.mpf("0.001")
+                n2 = [x for x, _ in truth.eigenmodes(sus, a, env["R"], env["g"])]
+                exists = min(n2) > 0 and env["beta_1"] < 0
+                claimed = verify.value_at(result.derived_value, env) < 0
+            ok &= env["beta_1"] < 0 and exists == claimed
+            kinds.add(exists)
+            notes.append(f"{k}: β1 = {mp.nstr(env['beta_1'], 4)}, a = {mp.nstr(a, 4)}: n² = {mp.nstr(min(n2), 4)}, "
+                         f"{mp.nstr(max(n2), 4)}; wλ = {mp.nstr(env['w_lambda'], 4)}")
+        ok &= kinds == {True, False}
+        return Evidence(kind="inequality", passed=bool(ok),
+                        truth=f"{truth.MODEL}: both n² at a > 0 (g < 0) against the sign of wλ of the shot blade",
+                        note="; ".join(notes))
+
+
+SIGN_U = ("1", "5/2", "3", "4", "6", "9", "19/2", "12", "31/2")
+
+
+@dataclass(frozen=True)
+class PositiveIffStable:
+    """(308): at u = λ√(mg/EI) inside and outside the windows, the derived form is positive if and only if β1 of
+    the direct stiffness (1/S00) is negative (304), i.e. 1/n'² has the sign for which the fast vibration can
+    exist."""
+
+    def __call__(self, result, level: str) -> Evidence:
+        ok, notes, kinds = True, [], set()
+        for x in SIGN_U:
+            value_u = suspension.number(sp.Rational(x))
+            b1 = beta1(f"u={x}")
+            with mp.workdps(40):
+                claimed = verify.value_at(result.derived_value, {"u": value_u}) > 0
+            ok &= claimed == (b1 < 0)
+            kinds.add(claimed)
+            notes.append(f"u = {x}: β1 = {mp.nstr(b1, 4)}")
+        ok &= kinds == {True, False}
+        return Evidence(kind="inequality", passed=bool(ok),
+                        truth=f"{truth.MODEL}: the sign of β1 = 1/S00 of the direct inverted uniform blade at u "
+                              f"{', '.join(SIGN_U)}", note="; ".join(notes))
