@@ -16,6 +16,7 @@ import mpmath as mp
 import sympy as sp
 
 from ...result import KernelArg, Result
+from .compile import emitted_py
 from .leaves import hard_argument, stable_forms
 from .measure import BOUND, Accuracy, errors, measure, py_callable
 from .rules import NEAR_VERTEX, NEAR_ZERO, REWRITES
@@ -78,7 +79,8 @@ def choose_form(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> Choice:
     # the vertex form where it cancels less is taken when it holds the bound: the plain form
     # cancels along the vertex curve, which a sample of a few hundred points barely meets
     for label, form, notes in stable_forms(expr, args, vertex=bool(vertex_points(expr, tuple(args), seed))):
-        acc = measure(py_callable(form, args), expr, args, full)
+        # measured as emitted (statements: a leaf's pieces nest too deep for one Python expression)
+        acc = measure(emitted_py(seed, args, form), expr, args, full)
         preferred = label == NEAR_VERTEX.label and acc.max_scaled <= BOUND
         if acc.max_scaled < best.accuracy.max_scaled or preferred:
             hard = hard_argument(expr, args).name

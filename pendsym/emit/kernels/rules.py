@@ -22,7 +22,7 @@ import sympy as sp
 from sympy.codegen.cfunctions import expm1
 
 from ...result import KernelArg
-from .plan import Grouped, Magnitude
+from .plan import Grouped, Magnitude, Select
 
 # ----------------------------------------------------------------- whole-expression rewrites
 
@@ -280,7 +280,7 @@ def near_vertex_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | 
     plain_sum = sp.Add(*[Magnitude(cf * K**m) for (m,), cf in poly.terms()])
     P, a = A.as_independent(*leaves)
     vertex_sum = Magnitude(A * (K - c_sym) ** 2) + 2 * Magnitude(A * (K - c_sym) * c_sym) + Magnitude(P * e_sym)
-    return sp.Piecewise((vform, vertex_sum < plain_sum), (skeleton, True)), new
+    return Select(plain_sum - vertex_sum, vform, skeleton), new
 
 
 PLAIN = SkeletonForm("", lambda skeleton, leaves: (skeleton, leaves))
