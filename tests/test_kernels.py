@@ -102,6 +102,32 @@ def test_agm_swing_time_within_4_ulp_from_small_to_large_amplitude(clib, generat
                     assert ulps <= BOUND, (al, kv, ulps)
 
 
+def test_the_swing_time_takes_numpy_arrays_with_the_same_values(tmp_path):
+    """The Python swing time on an array: the scalar kernel's values, element by element (the same
+    operations), within the bound of 50-digit ellipk; a domain error names the first bad element."""
+    import numpy
+    from pendsym import stages
+    texts = stages.pendulum_kernels(tmp_path)
+    path = tmp_path / "python" / "pendulum.py"
+    path.parent.mkdir(parents=True)
+    path.write_text(texts[path])
+    spec = importlib.util.spec_from_file_location("p_np", path)
+    py = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(py)
+    alphas = numpy.array([0.0, 1e-8, 1e-3, 0.5, 1.0, 2.0, 2.9, 3.0])
+    got = py.swing_time_agm(alphas, 1.3)
+    assert isinstance(got, numpy.ndarray) and got.shape == alphas.shape
+    with mp.workdps(50):
+        for al, v in zip(alphas, got):
+            assert abs(v - py.swing_time_agm(float(al), 1.3)) <= math.ulp(v)
+            ref = 2 * mp.ellipk(mp.sin(mp.mpf(float(al)) / 2) ** 2) / mp.mpf(1.3)
+            assert float(abs(mp.mpf(float(v)) - ref) / mp.mpf(math.ulp(float(ref)))) <= BOUND
+    with pytest.raises(ValueError, match="alpha = 3.5"):
+        py.swing_time_agm(numpy.array([1.0, 3.5]), 1.0)
+    with pytest.raises(ValueError, match="k = "):
+        py.swing_time_agm(numpy.array([1.0]), numpy.array([-1.0]))
+
+
 def test_withheld_kernels_are_over_the_bound_and_emitted_ones_within():
     """pendsym.derive emits a kernel only within kn.BOUND; a kernel over it is withheld."""
     from pendsym import derive
