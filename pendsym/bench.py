@@ -170,8 +170,8 @@ def methods(generated: Path, workdir: Path):
     def scipy_ellipk(arr):
         return 2 * scipy.special.ellipk(numpy.sin(arr / 2) ** 2) / K
     return [
-        ("exact, AGM, numpy kernel (10^6 elements)", agm_numpy, ("array",), ALPHAS),
-        ("scipy.special.ellipk (10^6 elements)", scipy_ellipk, ("array",), ALPHAS),
+        ("exact, AGM, numpy kernel (array of 1e6)", agm_numpy, ("array",), ALPHAS),
+        ("scipy.special.ellipk (array of 1e6)", scipy_ellipk, ("array",), ALPHAS),
         ("memoir T(1+α²/16), C kernel", lambda a: math.pi / K + c_dT(a, K), ("C", lib, 0), ALPHAS),
         ("memoir T(1+α²/16), Python kernel", lambda a: math.pi / K + getattr(ch, name)(a, K), 20000, ALPHAS),
         ("exact, AGM, C kernel", lambda a: c_T(a, K), ("C", lib, 1), ALPHAS),
