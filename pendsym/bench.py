@@ -5,6 +5,8 @@ The swing time (one swing, T = π/k at small amplitude) of θ'' + k² sin θ = 0
   * a memoir's small-amplitude formula, π/k + ΔT(α, k), from the generated kernel its Memoir names as
     ``swing_correction`` (Python and C);
   * the exact swing time π/(k·AGM(1, cos α/2)) (generated C and Python kernels);
+  * the same Python kernel on a numpy array of 10⁶ random amplitudes, beside scipy.special.ellipk
+    on the same array (per element, min and median of 5 calls);
   * mpmath's ellipk, 2K(sin² α/2)/k at 15 digits;
   * mpmath odefun integration of the ODE at 15, 20 and 30 digits.
 The reference is ellipk at 50 digits.  Timings are wall-clock per evaluation
@@ -18,6 +20,7 @@ import ctypes
 import importlib.util
 import json
 import math
+import os
 import random
 import statistics
 import subprocess
@@ -26,6 +29,8 @@ import time
 from pathlib import Path
 
 import mpmath as mp
+import numpy
+import scipy.special
 
 from . import registry
 from .io import write_atomic
@@ -76,6 +81,7 @@ double loop_ns(int which, const double *alphas, int n, long reps, double k)
 
 
 TIME_POINTS = 4096     # random, non-repeating amplitudes of a timing run (seeded)
+ARRAY_POINTS = 10**6   # amplitudes of a numpy timing run
 TIME_REPEATS = 5
 
 
@@ -96,6 +102,24 @@ def c_loop_time(lib, which: int) -> tuple[float, float]:
     f(which, arr, len(alphas), 20, K)
     runs = [f(which, arr, len(alphas), 200, K) * 1e-9 for _ in range(TIME_REPEATS)]
     return min(runs), statistics.median(runs)
+
+
+def array_time(fn) -> tuple[float, float]:
+    """(min, median) seconds per element of fn on ARRAY_POINTS random amplitudes (seeded), over
+    TIME_REPEATS calls."""
+    arr = numpy.random.default_rng(20261124).uniform(1e-3, 3.0, ARRAY_POINTS)
+    fn(arr)
+    runs = []
+    for _ in range(TIME_REPEATS):
+        t0 = time.perf_counter()
+        fn(arr)
+        runs.append((time.perf_counter() - t0) / ARRAY_POINTS)
+    return min(runs), statistics.median(runs)
+
+
+def load() -> str:
+    """The load averages when the figures were taken (the machine may be shared)."""
+    return " ".join(f"{v:.2f}" for v in os.getloadavg())
 
 
 def compile_apart(kernels: str, loop: str, workdir: Path) -> ctypes.CDLL:
@@ -140,7 +164,14 @@ def methods(generated: Path, workdir: Path):
     def ellipk15(a):
         with mp.workdps(15):
             return float(2 * mp.ellipk(mp.sin(mp.mpf(a) / 2) ** 2) / K)
+    def agm_numpy(arr):
+        return per.swing_time_agm(arr, K)
+
+    def scipy_ellipk(arr):
+        return 2 * scipy.special.ellipk(numpy.sin(arr / 2) ** 2) / K
     return [
+        ("exact, AGM, numpy kernel (array of 1e6)", agm_numpy, ("array",), ALPHAS),
+        ("scipy.special.ellipk (array of 1e6)", scipy_ellipk, ("array",), ALPHAS),
         ("memoir T(1+α²/16), C kernel", lambda a: math.pi / K + c_dT(a, K), ("C", lib, 0), ALPHAS),
         ("memoir T(1+α²/16), Python kernel", lambda a: math.pi / K + getattr(ch, name)(a, K), 20000, ALPHAS),
         ("exact, AGM, C kernel", lambda a: c_T(a, K), ("C", lib, 1), ALPHAS),
@@ -157,13 +188,15 @@ def run(generated: Path) -> list[dict]:
     with tempfile.TemporaryDirectory() as d:
         for name, fn, repeat, alphas in methods(generated, Path(d)):
             median = None
-            if isinstance(repeat, tuple):       # a C kernel: values through ctypes, time inside C
+            if repeat == ("array",):             # numpy: one call on ARRAY_POINTS random amplitudes
+                (per_eval, median), vals = array_time(fn), [float(v) for v in fn(numpy.array(alphas))]
+            elif isinstance(repeat, tuple):       # a C kernel: values through ctypes, time inside C
                 (per_eval, median), vals = c_loop_time(repeat[1], repeat[2]), [fn(a) for a in alphas]
             else:
                 per_eval, vals = _timed(fn, alphas, repeat)
             errs = [float(abs(mp.mpf(v) - reference(a)) / reference(a)) for a, v in zip(alphas, vals)]
             worst = max(range(len(errs)), key=errs.__getitem__)
-            rows.append({"method": name, "seconds_per_eval": per_eval, "median_seconds_per_eval": median,
+            rows.append({"method": name, "seconds_per_eval": per_eval, "median_seconds_per_eval": median, "load": load(),
                          "max_rel_error": errs[worst],
                          "worst_alpha": alphas[worst], "alphas": len(alphas),
                          "errors": [[a, e] for a, e in zip(alphas, errs)]})
@@ -214,8 +247,10 @@ def main(argv=None) -> int:
     memoir, _ = swing_memoir()
     write_atomic(out / f"{memoir}-period.json", json.dumps(rows, indent=1) + "\n")
     write_atomic(out / f"{memoir}-period.tex", tex_table(rows))
+    print(f"load averages (1, 5, 15 min) when measured: {rows[0]['load']}")
     for r in rows:
-        print(f"{r['method']:<36} {r['seconds_per_eval'] * 1e6:12.3f} us  max rel err {r['max_rel_error']:.2e}")
+        med = f" (median {r['median_seconds_per_eval'] * 1e9:.1f} ns)" if r.get("median_seconds_per_eval") else ""
+        print(f"{r['method']:<44} {r['seconds_per_eval'] * 1e9:12.1f} ns{med}  max rel err {r['max_rel_error']:.2e}")
     return 0
 
 

@@ -8,6 +8,7 @@ import sympy as sp
 
 from pendsym.emit import kernels as kn
 from pendsym.emit.kernels import rules
+from pendsym.emit.kernels.measure import ref_dps, reference
 from pendsym.result import KernelArg
 
 x, t, k = sp.symbols("x t k", positive=True)
@@ -20,8 +21,9 @@ def _ulp(got: float, true) -> float:
 
 def test_rewrites_are_named_frozen_objects_in_order():
     names = [r.name for r in kn.REWRITES]
-    assert names == ["as-derived", "factor", "expand-trig", "sin-basis", "cos-basis", "horner", "half-angle"]
-    assert {r.name for r in kn.REWRITES if r.trig} == {"expand-trig", "sin-basis", "cos-basis", "half-angle"}
+    assert names == ["as-derived", "factor", "expand-trig", "sin-basis", "cos-basis", "horner", "half-angle",
+                     "smaller-basis"]
+    assert {r.name for r in kn.REWRITES if r.trig} == {"expand-trig", "sin-basis", "cos-basis", "half-angle", "smaller-basis"}
     for r in kn.REWRITES:
         assert dataclasses.is_dataclass(r) and r.__dataclass_params__.frozen and callable(r)
 
@@ -74,3 +76,63 @@ def test_vertex_form_keeps_the_skeleton_and_adds_two_leaves():
     diff = vskel.xreplace(vleaves) - skeleton.xreplace(leaves)
     assert all(abs(sp.N(diff.subs({K: kv, u: uv}), 30)) < 1e-25 for kv in (-sp.Rational(3, 2), sp.Rational(1, 5), 2)
                for uv in (sp.Rational(3, 10), sp.Rational(5, 2)))
+
+
+def _scaled(f, e, syms, p):
+    """ulp / max(1, κ) of the double function f at p against the expression e (the contract's κ)."""
+    ref, cond = reference(e, list(syms))
+    with mp.workdps(ref_dps(p)):
+        true = ref(*[mp.mpf(v) for v in p])
+        return _ulp(f(*p), true) / max(1.0, float(cond(*[mp.mpf(v) for v in p])))
+
+
+def test_the_leading_term_below_tiny_t_loses_nothing_to_subnormal_products():
+    """make audit found E_c of Charbonnier's n°21 at 33.8 scaled at t = 2.5e-323 (α³·t rounded to a
+    subnormal, then multiplied by 1/k); the series' leading term, c first, holds the bound there."""
+    alpha = sp.Symbol("alpha", positive=True)
+    e = -alpha**3 * (3 * k * t + 2 * sp.sin(2 * k * t) + sp.sin(4 * k * t) / 4) / (8 * k)
+    args = (KernelArg("alpha", 1e-3, 3.0, log=False), KernelArg("k", 0.1, 10.0), KernelArg("t", 0.0, 10.0, log=False))
+    near = kn.NEAR_ZERO.series(e, args)
+    plain = kn.py_callable(next(r for r in kn.REWRITES if r.name == "expand-trig")(e), args)   # as emitted before
+    stable = kn.py_callable(kn.NEAR_ZERO(e, near), args)
+    pts = [(3.0, 0.1, 2.47033e-323), (2.9373, 9.373, 1.5e-323), (2.7, 0.37, 4.4e-320), (1.3, 3.3, 1e-300)]
+    assert max(_scaled(plain, e, (alpha, k, t), p) for p in pts) > 4            # the failure it cures
+    for p in pts:
+        assert _scaled(stable, e, (alpha, k, t), p) <= 1.0, p
+
+
+def test_the_smaller_basis_holds_where_the_sin_and_the_cos_bases_cancel():
+    """E_s of n°22/n°26, (c·sin² − 2)·sin²/(4k): the cos basis cancels at kt = π (make audit: 2.3e6
+    and 4.7e6 scaled), the sin basis loses 5–6 ulp where sin² ≈ 1; the smaller basis holds both."""
+    for c in (5, 15):
+        e = (c * sp.sin(k * t) ** 2 - 2) * sp.sin(k * t) ** 2 / (4 * k)
+        args = (KernelArg("k", 0.1, 10.0), KernelArg("t", 0.0, 10.0, log=False))
+        rule = next(r for r in kn.REWRITES if r.name == "smaller-basis")
+        f = kn.py_callable(rule(e), args)
+        cos_basis = kn.py_callable(next(r for r in kn.REWRITES if r.name == "cos-basis")(e), args)
+        pts = [(1.85553, 3.3862), (0.345164, 9.10173), (6.41701, 3.18107), (0.364141, 3.95485),
+               (1.0, math.pi * (1 + 1e-9)), (2.0, 3 * math.pi / 4)]
+        assert max(_scaled(cos_basis, e, (k, t), p) for p in pts) > 1e3
+        for p in pts:
+            assert _scaled(f, e, (k, t), p) <= 4, (c, p)
+
+
+def test_the_sample_holds_subnormal_t_and_the_zeros_of_sin_and_cos():
+    e = (5 * sp.sin(k * t) ** 2 - 2) * sp.sin(k * t) ** 2 / (4 * k)
+    args = (KernelArg("k", 0.1, 10.0), KernelArg("t", 0.0, 10.0, log=False))
+    pts = kn.kernel_sample(e, args, "probe")
+    assert any(0 < p[1] < 1e-320 for p in pts)
+    near_pi = [p for p in pts if 0 < abs(p[0] * p[1] / math.pi - round(p[0] * p[1] / math.pi)) < 1e-11
+               and round(p[0] * p[1] / math.pi) > 0]
+    assert near_pi, "no point near k·t = mπ"
+
+
+def test_a_split_constant_is_two_doubles_whose_sum_is_the_constant():
+    from pendsym.emit.kernels import series
+    c = sp.Rational(1, 3)
+    form = series.split_constant(c, sp.Symbol("x") * 0 + sp.Symbol("r"))
+    hi, rest = form.as_independent(sp.Symbol("r"))
+    lo = rest.args[0].as_independent(sp.Symbol("r"))[0]
+    assert float(hi) == 1 / 3 and float(lo) != 0
+    with mp.workdps(40):
+        assert abs(mp.mpf(float(hi)) + mp.mpf(float(lo)) - mp.mpf(1) / 3) < mp.mpf(10) ** -32

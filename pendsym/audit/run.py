@@ -9,7 +9,7 @@ For each kernel listed in ``generated/results.json``:
    points found, which climbs the scaled error ulp / max(1, κ);
 2. the reference is the Result's *derived* form in mpmath at 50 digits, 8 more per decade the
    smallest argument lies below 1 (:func:`pendsym.emit.kernels.limits.ref_dps`), and
-   every point whose error exceeds half the bound is confirmed with :data:`CONFIRM_DIGITS` more;
+   every point whose error exceeds the bound is confirmed with :data:`CONFIRM_DIGITS` more;
    κ is the condition number of :func:`pendsym.emit.kernels.measure.reference` (computed where
    the error in ulp could exceed the scaled error already found: scaled ≤ ulp);
 3. the C time per call is measured on random points of the domain (min and median of 5 runs).
@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import ctypes
+import heapq
 import importlib.util
 import json
 import math
@@ -51,7 +52,7 @@ LIMIT_AT = 1e-80         # the reference at 0 of an argument accepted down to 0:
 POINTS = 20_000          # points per kernel, the search included
 CLIMB_STARTS = 8         # the worst points the search starts from
 CLIMB_BUDGET = 1_200     # evaluations of the search, over its starts
-CONFIRM_DIGITS = 60      # more digits for a point whose error exceeds half the bound
+CONFIRM_DIGITS = 60      # more digits for a point whose error exceeds the bound
 TINY_POINTS = 64         # points in (0, lo) of an argument accepted down to 0 (each needs up to 2,600 digits)
 TIME_POINTS = 4096       # random points of a timing run
 TIME_REPEATS = 5
@@ -125,24 +126,26 @@ class Judge:
             return math.inf
         if true == 0:
             return 0.0 if abs(got) < 1e-300 else math.inf
-        with mp.workdps(max(mp.mp.dps, 50)):
-            return float(abs(mp.mpf(got) - true) / mp.mpf(math.ulp(float(true))))
+        with mp.workprec(64):               # the difference rounded to 64 bits: ample for an error in ulp
+            return float(abs(mp.mpf(got) - true)) / math.ulp(float(true))
 
     def errors(self, p: tuple, extra: int = 0) -> tuple[float, float]:
         """(Python ulp, C ulp) at p."""
         true = self.truth(p, extra)
         return self.ulp(self._call(self.job.py, p), true), self.ulp(self._call(self.job.c, p), true)
 
-    def scaled(self, p: tuple, floor: float = -1.0) -> tuple[float, float, float, float, float]:
+    def scaled(self, p: tuple, floor: float = -1.0, known: tuple | None = None) -> tuple[float, float, float, float, float]:
         """(Python ulp, C ulp, κ, Python scaled, C scaled); κ only where the error could beat `floor`
-        (else NaN, and the scaled errors are the ulp errors, an upper bound)."""
-        e_py, e_c = self.errors(p)
-        if max(e_py, e_c) > kn.BOUND / 2:
-            e_py, e_c = self.errors(p, CONFIRM_DIGITS)
+        (else NaN, and the scaled errors are the ulp errors, an upper bound).  A scaled error over
+        the bound is confirmed with CONFIRM_DIGITS more digits in the reference (`known`: the errors
+        at p, already measured)."""
+        e_py, e_c = known or self.errors(p)
         if max(e_py, e_c) <= max(floor, 1.0):
             return e_py, e_c, math.nan, e_py, e_c
         k = self.kappa(p)
         m = max(1.0, k) if not math.isnan(k) else 1.0
+        if max(e_py, e_c) / m > kn.BOUND:
+            e_py, e_c = self.errors(p, CONFIRM_DIGITS)
         return e_py, e_c, k, e_py / m, e_c / m
 
 
@@ -219,14 +222,18 @@ def audit_one(job: Job) -> dict:
     # κ in decreasing order of the ulp error, until no further point can enter the worst few
     first.sort(key=lambda r: -max(r[1]))
     worst: list = []
+    top: list = []                              # a heap of the CLIMB_STARTS largest scaled errors
     for p, (e_py, e_c) in first:
-        floor = sorted(w[0] for w in worst)[-CLIMB_STARTS] if len(worst) >= CLIMB_STARTS else -1.0
+        floor = top[0] if len(top) >= CLIMB_STARTS else -1.0
         if max(e_py, e_c) <= max(floor, 1.0) and max(e_py, e_c) <= kn.BOUND:
             rows.append((max(e_py, e_c), p, e_py, e_c, math.nan, e_py, e_c))
             continue
-        row = judge.scaled(p)
+        row = judge.scaled(p, known=(e_py, e_c))
         rows.append((max(row[3], row[4]), p, *row))
         worst.append(rows[-1])
+        heapq.heappush(top, rows[-1][0])
+        if len(top) > CLIMB_STARTS:
+            heapq.heappop(top)
     tried = len(pts)
     starts = sorted(worst or rows, key=lambda r: -r[0])[:CLIMB_STARTS]
     for r in starts:

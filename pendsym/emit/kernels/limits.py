@@ -19,22 +19,13 @@ import sympy as sp
 
 from ...result import KernelArg
 from .leaves import hard_argument
-from .measure import BOUND
+from .measure import BOUND, ref_dps
 
 # 0, subnormals, then every third decade and a seeded point inside each (a sparser list let through
 # F at u = 2.8e-65 and F_max at α = 1.2e-157: the accepted domain must be measured as densely as the audit)
 TINY = (0.0, 5e-324, 1e-320, 1e-310) + tuple(m * 10.0 ** -k for k in range(306, 6, -3) for m in (1.0, 2.8))
 TRIES = 4             # seeded values of the other arguments at each tiny value
-REF_DPS = 50
-DIGITS_PER_DECADE = 8 # a form may cancel like 1/x^8 as x → 0: so many more digits per decade below 1
 LIMIT_AT = (1e-40, 1e-80)   # the limit at 0: the derived form at 1e-80, or 0 where it falls by 1e-30 from 1e-40
-
-
-def ref_dps(p: Sequence[float]) -> int:
-    """Digits for the derived form at p: REF_DPS, plus DIGITS_PER_DECADE for each decade the
-    smallest nonzero coordinate lies below 1."""
-    small = min((abs(v) for v in p if v != 0 and math.isfinite(v)), default=1.0)
-    return REF_DPS + DIGITS_PER_DECADE * max(0, math.ceil(-math.log10(small)))
 
 
 def accepted_domain(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: sp.Expr) -> tuple:
@@ -50,7 +41,7 @@ def accepted_domain(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: s
     dom[i] = (0.0, hard.hi)
     fn = emitted_py(seed, args, form, tuple(dom))
     syms = [next(s for s in expr.free_symbols if s.name == a.name) for a in args]
-    f = sp.lambdify(syms, expr, modules="mpmath")
+    f = sp.lambdify(syms, expr, modules="mpmath", cse=True)
     rng = random.Random(seed + ":limits")
     for x in TINY:
         for _ in range(TRIES):

@@ -20,8 +20,16 @@ from .printing import KernelPy
 
 BOUND = 4.0    # ulp × max(1, condition number): the accuracy a kernel must hold
 REF_DPS = 50   # digits of the reference values
-COND_DPS = 80  # digits of the forward differences of κ, relative step 10^-COND_STEP
+DIGITS_PER_DECADE = 8   # a form may cancel like 1/x^8 as x → 0: so many more digits per decade below 1
+COND_DPS = 80  # digits of the forward differences of κ (at least; 30 more than the value's), step 10^-COND_STEP
 COND_STEP = 35
+
+
+def ref_dps(p: Sequence[float]) -> int:
+    """Digits for the derived form at p: REF_DPS, plus DIGITS_PER_DECADE for each decade the
+    smallest nonzero coordinate lies below 1 (t = 1e-300 in kt − sin kt cos kt cancels 600 digits)."""
+    small = min((abs(v) for v in p if v != 0 and math.isfinite(v)), default=1.0)
+    return REF_DPS + DIGITS_PER_DECADE * max(0, math.ceil(-math.log10(small)))
 
 
 @dataclass(frozen=True)
@@ -47,13 +55,13 @@ def reference(expr: sp.Expr, syms) -> tuple[Callable, Callable]:
     The partial derivatives are forward differences at 80 digits with a relative step of
     1e-35 (truncation and rounding both ~1e-35 relative): as good as the symbolic derivative
     for a condition number, and far cheaper for large kernels."""
-    f = sp.lambdify(syms, expr, modules="mpmath")
+    f = sp.lambdify(syms, expr, modules="mpmath", cse=True)    # (tanh(u/2) once, not thirty times)
 
     def cond(*xs):
         v = f(*xs)
         if v == 0:
             return mp.inf
-        with mp.workdps(COND_DPS):
+        with mp.workdps(max(COND_DPS, mp.mp.dps + 30)):    # the differences keep 30 digits more than f needs
             xs = [mp.mpf(x) for x in xs]
             here, total = f(*xs), mp.mpf(0)
             for i, x in enumerate(xs):
@@ -77,7 +85,7 @@ def _truth_at(expr: sp.Expr, syms: tuple, p: tuple) -> tuple:
     """(50-digit value, condition number) of expr at the point p; every candidate form of a
     kernel is measured on the same points, so each is computed once."""
     f, cond = _reference_of(expr, syms)
-    with mp.workdps(REF_DPS):
+    with mp.workdps(ref_dps(p)):
         xs = [mp.mpf(x) for x in p]
         true = f(*xs)
         try:

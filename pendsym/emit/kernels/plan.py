@@ -33,6 +33,14 @@ class Magnitude(sp.Function):
     nargs = 1
 
 
+class Select(sp.Function):
+    """``b if d > 0 else c`` as one expression (C: ``d > 0 ? b : c``): a choice between two forms
+    that, unlike a Piecewise condition, SymPy does not fold (a Piecewise whose condition holds
+    the piecewise leaves is multiplied out over every combination of their pieces)."""
+
+    nargs = 3
+
+
 class If(Token):
     """``if … else if … else``: `branches`, a tuple of (condition, CodeBlock); a last condition
     ``true`` is the ``else``."""

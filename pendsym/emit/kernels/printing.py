@@ -66,6 +66,10 @@ class _Statements:
     def _print_Magnitude(self, expr) -> str:
         return f"{self._abs}({self._print(expr.args[0])})"
 
+    def _print_Select(self, expr) -> str:
+        d, b, c = (self._print(a) for a in expr.args)
+        return f"(({b}) if ({d}) > 0 else ({c}))" if self._abs == "abs" else f"(({d}) > 0 ? ({b}) : ({c}))"
+
     def _print_CodeBlock(self, block, depth: int = 1) -> str:
         lines = []
         for s in block.args:

@@ -22,7 +22,7 @@ import sympy as sp
 from sympy.codegen.cfunctions import expm1
 
 from ...result import KernelArg
-from .plan import Magnitude
+from .plan import Grouped, Magnitude, Select
 
 # ----------------------------------------------------------------- whole-expression rewrites
 
@@ -63,6 +63,17 @@ def half_angle(e: sp.Expr) -> sp.Expr:
     return sp.factor(sp.expand(e.replace(sp.cos, lambda x: 1 - 2 * sp.sin(x / 2) ** 2)))
 
 
+def smaller_basis(e: sp.Expr) -> sp.Expr:
+    """The sin basis where |sin φ| < |cos φ|, the cos basis elsewhere (one phase φ): each basis
+    cancels only where its variable is near 1 (1 − s² as s → 1), so each is used where its
+    variable is at most 1/√2, and a polynomial in s² then loses no digits away from its zeros."""
+    phases = {f.args[0] for f in e.atoms(sp.sin, sp.cos)}
+    if len(phases) != 1:
+        raise ValueError("one phase is needed")
+    (phi,) = phases
+    return sp.Piecewise((sin_basis(e), Magnitude(sp.sin(phi)) < Magnitude(sp.cos(phi))), (cos_basis(e), True))
+
+
 REWRITES: tuple[Rewrite, ...] = (
     Rewrite("as-derived", lambda e: e),
     Rewrite("factor", sp.factor),
@@ -71,6 +82,7 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("cos-basis", cos_basis, trig=True),
     Rewrite("horner", lambda e: sp.horner(sp.expand(e)) if e.is_polynomial() else e),
     Rewrite("half-angle", half_angle, trig=True),
+    Rewrite("smaller-basis", smaller_basis, trig=True),
 )
 
 # ----------------------------------------------------------------- series near t = 0
@@ -80,14 +92,20 @@ REWRITES: tuple[Rewrite, ...] = (
 class SeriesNearZero:
     """The Taylor series in t of a form that cancels as t → 0 (kt − sin kt cos kt …), used
     where the phase k·t (t without k) is below `phase`.  With 44 orders kept, the truncation
-    at k·t = 0.35 is below 2e-18 relative to a leading term of order ≤ 5."""
+    at k·t = 0.35 is below 2e-18 relative to a leading term of order ≤ 5.
+
+    Below `tiny` (where the next order is 1e-300 of the leading one) only the leading term
+    c·t^m is evaluated, as ((c·t)·t)…: c first, then one rounding per factor t, so that a
+    subnormal t or a subnormal result loses nothing to an intermediate subnormal product
+    (the plain series rounds α³·t to a subnormal first and then multiplies it by 1/k)."""
 
     name: str = "series-near-t=0"
     order: int = 44
     phase: sp.Rational = sp.Rational(7, 20)
+    tiny: float = 1e-150
 
-    def series(self, e: sp.Expr, args: Sequence[KernelArg]) -> tuple[sp.Expr, sp.Expr] | None:
-        """(series, phase), or None when t is not an argument from 0 or the series vanishes."""
+    def series(self, e: sp.Expr, args: Sequence[KernelArg]) -> tuple[sp.Expr, sp.Expr, sp.Expr] | None:
+        """(series, phase, leading term), or None when t is not an argument from 0 or the series vanishes."""
         by = {x.name: x for x in e.free_symbols}
         if "t" not in by or not any(a.name == "t" and a.lo == 0 for a in args):
             return None
@@ -96,13 +114,18 @@ class SeriesNearZero:
         if ser == 0:
             return None
         phase = by["k"] * t if "k" in by else t
+        poly = sp.Poly(sp.expand(ser), t)
+        (m,), c = poly.terms()[-1]                  # the lowest order
+        lead = Grouped(sp.N(c, 20))
+        for _ in range(m):
+            lead = Grouped(lead * t)
         # rational coefficients become 20-digit floats (exact to double), so no huge integer literals
-        return sp.horner(sp.N(sp.collect(sp.expand(ser), t), 20), wrt=t), phase
+        return sp.horner(sp.N(sp.collect(sp.expand(ser), t), 20), wrt=t), phase, lead
 
-    def __call__(self, form: sp.Expr, near: tuple[sp.Expr, sp.Expr]) -> sp.Expr:
-        """form, with the series (from :meth:`series`) below the phase."""
-        ser, phase = near
-        return sp.Piecewise((ser, phase < self.phase), (form, True))
+    def __call__(self, form: sp.Expr, near: tuple) -> sp.Expr:
+        """form, with the series (from :meth:`series`) below the phase and its leading term below `tiny`."""
+        ser, phase, lead = near
+        return sp.Piecewise((lead, phase < self.tiny), (ser, phase < self.phase), (form, True))
 
 
 NEAR_ZERO = SeriesNearZero()
@@ -257,7 +280,7 @@ def near_vertex_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | 
     plain_sum = sp.Add(*[Magnitude(cf * K**m) for (m,), cf in poly.terms()])
     P, a = A.as_independent(*leaves)
     vertex_sum = Magnitude(A * (K - c_sym) ** 2) + 2 * Magnitude(A * (K - c_sym) * c_sym) + Magnitude(P * e_sym)
-    return sp.Piecewise((vform, vertex_sum < plain_sum), (skeleton, True)), new
+    return Select(plain_sum - vertex_sum, vform, skeleton), new
 
 
 PLAIN = SkeletonForm("", lambda skeleton, leaves: (skeleton, leaves))

@@ -22,6 +22,9 @@ from .series import KNOTS, SWITCHES
 
 VERTEX_POINTS = 32     # sample points on the vertex curve of a quadratic skeleton
 CORNERS = 64           # at most this many corners of the domain
+TINY = (5e-324, 1.5e-323, 2.5e-322, 4.4e-320, 1e-315, 1e-310, 1e-300, 1e-160, 1e-30)   # values of a linear argument from 0 (subnormal results)
+PHASE_POINTS = 6       # points at each multiple of π/2 of a trigonometric argument
+PHASE_SHIFTS = (0.0, 1e-12, -1e-12, 1e-7, -1e-7, 1e-3, -1e-3)   # relative offsets from it
 
 
 def draw(a: KernelArg, rng: random.Random) -> float:
@@ -97,7 +100,63 @@ def _kernel_sample(expr: sp.Expr, args: tuple[KernelArg, ...], seed: str) -> tup
     hard = hard_argument(expr, args)
     pts = sample_points(args, seed, pieces=hard.name if hard is not None else None)
     pts += vertex_points(expr, args, seed)
+    pts += tiny_points(args, seed) + phase_points(expr, args, seed)
     return tuple(sorted(set(pts), key=pts.index))
+
+
+def tiny_points(args: Sequence[KernelArg], seed: str) -> list[tuple[float, ...]]:
+    """For a linear argument from 0 (such as t): the values TINY, down to the smallest subnormal,
+    the other arguments drawn at random or at their largest magnitude (a form evaluated there
+    rounds subnormal intermediates, such as k·t, and a large factor then multiplies the error)."""
+    rng = random.Random(seed + ":tiny")
+    out = []
+    for i, a in enumerate(args):
+        if a.log or a.lo != 0:
+            continue
+        for v in TINY:
+            # at random, and with the others at their largest magnitude (the largest subnormal result)
+            for p in ([draw(b, rng) for b in args], [b.hi if abs(b.hi) >= abs(b.lo) else b.lo for b in args],
+                      [0.9373 * (b.hi if abs(b.hi) >= abs(b.lo) else b.lo) for b in args],
+                      [0.7071 * (b.hi if abs(b.hi) >= abs(b.lo) else b.lo) for b in args]):
+                p[i] = v
+                out.append(tuple(p))
+    return out
+
+
+def phase_points(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> list[tuple[float, ...]]:
+    """Where the argument φ of a sin or cos is near a multiple m·π/2 (a zero of sin or cos, where
+    1 ± cos φ or a polynomial in sin² cancels): for each argument x in which φ = x·r is linear,
+    x = m·(π/2)/r·(1 + δ) for the shifts δ of PHASE_SHIFTS, the other arguments at random."""
+    rng = random.Random(seed + ":phase")
+    by = {s.name: s for s in expr.free_symbols}
+    phases = {f.args[0] for f in expr.atoms(sp.sin, sp.cos)}
+    out = []
+    for phi in sorted(phases, key=sp.default_sort_key):
+        for i, a in enumerate(args):
+            x = by.get(a.name)
+            if x is None or not phi.has(x) or sp.diff(phi, x, 2) != 0 or (phi - sp.diff(phi, x) * x) != 0:
+                continue
+            rate = sp.lambdify([by[b.name] for b in args if b.name in by], sp.diff(phi, x), modules="math")
+            names = [b.name for b in args if b.name in by]
+            for _ in range(PHASE_POINTS):
+                p = [draw(b, rng) for b in args]
+                try:
+                    r = float(rate(*[p[j] for j, b in enumerate(args) if b.name in names]))
+                except (ZeroDivisionError, ValueError, OverflowError):
+                    continue
+                if r == 0:
+                    continue
+                ms = [m for m in range(1, 400) if a.lo <= m * (math.pi / 2) / r <= a.hi]
+                if not ms:
+                    continue
+                m = rng.choice(ms[:4] + ms[-2:])
+                for d in PHASE_SHIFTS:
+                    v = m * (math.pi / 2) / r * (1 + d)
+                    if a.lo <= v <= a.hi:
+                        q = list(p)
+                        q[i] = v
+                        out.append(tuple(q))
+    return out
 
 
 @functools.lru_cache(maxsize=256)

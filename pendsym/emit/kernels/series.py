@@ -97,15 +97,32 @@ def laurent(c: sp.Expr, x: sp.Symbol, span: int = SERIES_SPAN) -> tuple[int, lis
     return vn - vd, q
 
 
+def split_constant(c, rest: sp.Expr) -> sp.Expr:
+    """c + rest, with c as the sum of two doubles hi + lo (hi = c rounded, lo = c − hi) evaluated
+    as hi + (lo + rest): where c dominates a Horner sum, its rounding (½ ulp) is no longer an
+    error, only the last addition's.  The parenthesis is a :class:`.plan.Grouped` unit."""
+    from .plan import Grouped
+    with mp.workdps(40):
+        cm = mp.mpf(c) if not isinstance(c, sp.Basic) else mp.mpf(sp.N(c, 40))
+        hi = float(mp.nstr(cm, 20))
+        lo = cm - mp.mpf(hi)
+    if lo == 0:
+        return sp.Float(mp.nstr(cm, 20), 20) + rest
+    return sp.Float(repr(hi), 17) + Grouped(sp.Float(mp.nstr(lo, 20), 20) + rest)
+
+
 def series_expr(m: int, coeffs: list, x: sp.Symbol) -> sp.Expr:
-    """x^m times the series in Horner form (in x² when the series is even), 20-digit coefficients."""
+    """x^m times the series in Horner form (in x² when the series is even), 20-digit coefficients;
+    the constant term split in two doubles (:func:`split_constant`)."""
     while coeffs and coeffs[-1] == 0:
         coeffs = coeffs[:-1]
     even = all(c == 0 for c in coeffs[1::2])
     cs, w = (coeffs[::2], x**2) if even else (coeffs, x)
     h = sp.S.Zero
-    for c in reversed(cs):
+    for c in reversed(cs[1:]):
         h = sp.Float(sp.N(c, 20), 20) + w * h if c != 0 or h != 0 else h
+    h = split_constant(cs[0], w * h) if cs and cs[0] != 0 and h != 0 else (
+        sp.Float(sp.N(cs[0], 20), 20) + w * h if cs and cs[0] != 0 else w * h)
     return x**m * h
 
 
@@ -134,22 +151,27 @@ def taylor_coeffs(ref: Callable, m: int, lo: float, hi: float, terms: int = MID_
 
 
 def taylor_expr(c: float, cs: list, m: int, x: sp.Symbol) -> sp.Expr:
-    """x^m times the Taylor polynomial about c in Horner form, 20-digit coefficients."""
+    """x^m times the Taylor polynomial about c in Horner form, 20-digit coefficients, the constant
+    term split in two doubles (:func:`split_constant`)."""
     h = sp.S.Zero
     dx = x - sp.Float(c, 17)
-    for cf in reversed(cs):
+    for cf in reversed(cs[1:]):
         h = sp.Float(mp.nstr(cf, 20), 20) + dx * h
-    return x**m * h
+    return x**m * split_constant(cs[0], dx * h)
 
 
 def taylor_double(c: float, cs: list, m: int) -> Callable[[float], float]:
     """The Taylor piece evaluated in double exactly as its printed form is (the same roundings)."""
-    fs = [float(mp.nstr(cf, 20)) for cf in reversed(cs)]
+    fs = [float(mp.nstr(cf, 20)) for cf in reversed(cs[1:])]
+    with mp.workdps(40):
+        hi = float(mp.nstr(cs[0], 20))
+        lo = float(mp.nstr(cs[0] - mp.mpf(hi), 20))
 
     def f(v: float) -> float:
         dx, h = v - c, fs[0]
         for cf in fs[1:]:
             h = cf + dx * h
+        h = hi + (lo + dx * h)
         return v**m * h if m else h
     return f
 
