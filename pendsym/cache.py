@@ -172,13 +172,15 @@ def memo(k: str, compute: Callable[[], T]) -> T:
     return memo_fresh(k, compute)[0]
 
 
-def memo_fresh(k: str, compute: Callable[[], T]) -> tuple[T, bool]:
-    """(value, computed): as :func:`memo`, and whether the value was computed now."""
+def memo_fresh(k: str, compute: Callable[[], T], keep: bool = True) -> tuple[T, bool]:
+    """(value, computed): as :func:`memo`, and whether the value was computed now (and stored,
+    unless ``keep`` is false)."""
     value = load(k)
     if value is not MISSING:
         return value, False
     value = compute()
-    store(k, value)
+    if keep:
+        store(k, value)
     return value, True
 
 

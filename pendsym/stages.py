@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import os
 import shutil
 import tempfile
 import time
@@ -98,13 +99,14 @@ def _forms(spec: Spec, built: Mapping[str, Result]) -> tuple[sp.Basic, sp.Basic 
     return r.derived, r.printed
 
 
-def _build_ids(pl: Plan, ids: list[str], built: dict) -> list[str]:
-    """Results of ids (dependencies first) into ``built``, their forms from the cache or built here;
-    the ids built anew."""
+def _build_ids(pl: Plan, ids: list[str], built: dict, keep: bool = True) -> list[str]:
+    """Results of ids (dependencies first) into ``built``, their forms from the cache or built here
+    (and stored, if ``keep``); the ids built anew."""
     fresh = []
     for rid in ids:
         spec = pl.specs[rid]
-        (derived, printed), computed = cache.memo_fresh(pl.key("built", rid), functools.partial(_forms, spec, built))
+        (derived, printed), computed = cache.memo_fresh(pl.key("built", rid), functools.partial(_forms, spec, built),
+                                                        keep)
         built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={d: built[d] for d in spec.deps})
         if computed:
             fresh.append(rid)
@@ -238,6 +240,33 @@ def assess(results, level: str = "full", run_checks: bool = True) -> list[pipeli
 
 def _compared(result: Result):
     return pipeline.compare(result), None
+
+
+# ----------------------------------------------------------------- the same work, for a few Results
+@functools.lru_cache(maxsize=2)
+def plan_of(level: str = "full") -> Plan:
+    """The plan of a derive at ``level`` (computed once per process)."""
+    return plan(level)
+
+
+def results(ids=None, level: str = "full", memoirs=None) -> dict[str, Result]:
+    """The Results of ``ids`` (or of whole ``memoirs``) and their closure, built as ``make derive``
+    builds them: each form from the cache when this very code built it before (its key covers the
+    sources it depends on), built here otherwise, and stored only under the string-hash seed a
+    derive runs with (a SymPy form can follow it: see ``pendsym.cli``)."""
+    pl = plan_of(level)
+    if ids is None:
+        ids = [i for i in pl.order if pl.specs[i].memoir in set(memoirs)]
+    built: dict[str, Result] = {}
+    _build_ids(pl, registry.closure(list(ids), pl.specs), built, keep=os.environ.get("PYTHONHASHSEED") == "0")
+    return built
+
+
+def assessed(result: Result, level: str = "full") -> tuple[tuple[str, str], object]:
+    """((comparison, how), evidence) of one Result, as ``make derive`` assesses it: from the cache
+    when this very code assessed it before, computed (and cached) here otherwise."""
+    pl = plan_of(level)
+    return cache.memo(pl.key("assessed", result.id), functools.partial(pipeline.assessed, result, level))
 
 
 def _sections(pl: Plan, ids: list[str]) -> str:

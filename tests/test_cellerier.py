@@ -3,7 +3,7 @@ definitions, and every check passes at full level (as make derive runs it)."""
 import pytest
 
 from derivations.cellerier import common
-from pendsym import checks, pipeline, registry
+from pendsym import checks, pipeline, registry, stages
 
 SPECS = registry.all_specs(["cellerier"])
 CHECKED = sorted(i for i, s in SPECS.items() if s.check is not None)
@@ -12,7 +12,7 @@ INCIPITS = {f"« {words} … »" for words in common.PARAGRAPHS.values()}
 
 @pytest.fixture(scope="module")
 def built():
-    return registry.build(memoirs=["cellerier"])
+    return stages.results(memoirs=["cellerier"])
 
 
 def test_every_result_has_a_check():
@@ -43,7 +43,7 @@ def test_the_only_discrepancy_is_the_sign_of_F(built):
 @pytest.mark.slow
 @pytest.mark.parametrize("rid", [i for i in CHECKED if not isinstance(SPECS[i].check, checks.Chain)])
 def test_check_passes(built, rid):
-    ev = pipeline.check(built[rid], "full")
+    ev = stages.assessed(built[rid])[1]
     assert ev.passed, ev
 
 
@@ -51,6 +51,6 @@ def test_check_passes(built, rid):
 @pytest.mark.parametrize("rid", [i for i in CHECKED if isinstance(SPECS[i].check, checks.Chain)])
 def test_a_step_passes_through_the_results_it_feeds(built, rid):
     chain = SPECS[rid].check
-    assert pipeline.check(built[rid], "full") is None          # a step has no check of its own
-    ev = checks.chained(chain, {d: pipeline.check(built[d], "full") for d in chain.downstream})
+    assert stages.assessed(built[rid])[1] is None          # a step has no check of its own
+    ev = checks.chained(chain, {d: stages.assessed(built[d])[1] for d in chain.downstream})
     assert ev.kind == "chain" and ev.passed, ev

@@ -4,11 +4,11 @@ import sympy as sp
 
 from derivations.cellerier import elastic_bar
 from derivations.cellerier.symbols import K, M, a, c, g, l, x
-from pendsym import registry
+from pendsym import stages
 
 
 def test_the_forced_bar_and_its_slow_limit():
-    built = registry.build(["cellerier.K_ac", "cellerier.bar_dynamic_correction"])
+    built = stages.results(["cellerier.K_ac", "cellerier.bar_dynamic_correction"])
     particular = built["cellerier.bar_particular"].derived
     assert sp.simplify(particular - elastic_bar.bar_particular_printed()) == 0
     assert built["cellerier.K_ac"].derived == a * c

@@ -4,7 +4,7 @@ import sympy as sp
 
 from derivations.cellerier import equation
 from derivations.cellerier.symbols import C, g, h, l, m, mu_p, theta, thetad, thetadd, x1dd, x1s, y1dd, y1s
-from pendsym import pipeline, registry
+from pendsym import stages
 
 
 def test_the_pressures_of_the_first_two_equations():
@@ -27,12 +27,12 @@ def test_body_sums_need_only_the_polar_moment():
 
 
 def test_the_equation_in_l():
-    built = registry.build(["cellerier.equation_l"])
+    built = stages.results(["cellerier.equation_l"])
     result = built["cellerier.equation_l"]
     assert sp.simplify(result.derived - (-g / l * sp.sin(theta) + mu_p / (m * h * l))) == 0
 
 
 def test_newton_check_of_mu_prime():
-    built = registry.build(["cellerier.mu_prime"])
-    ev = pipeline.check(built["cellerier.mu_prime"], "quick")
+    built = stages.results(["cellerier.mu_prime"])
+    ev = stages.assessed(built["cellerier.mu_prime"])[1]
     assert ev.passed and ev.max_residual < 1e-20

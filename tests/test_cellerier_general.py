@@ -3,11 +3,11 @@ import sympy as sp
 
 from derivations.cellerier import general
 from derivations.cellerier.symbols import alpha, h, phi, u
-from pendsym import pipeline, registry
+from pendsym import pipeline, stages
 
 
 def test_printed_and_derived_agree_on_test_functions():
-    built = registry.build(["cellerier.delta_general", "cellerier.alpha1_general"])
+    built = stages.results(["cellerier.delta_general", "cellerier.alpha1_general"])
     for rid in ("cellerier.delta_general", "cellerier.alpha1_general"):
         assert pipeline.compare(built[rid])[0] == "match", rid
 

@@ -3,11 +3,11 @@ import sympy as sp
 
 from derivations.cellerier import practical
 from derivations.cellerier.symbols import eps
-from pendsym import checks, registry
+from pendsym import checks, stages
 
 
 def test_the_worked_example():
-    built = registry.build(["cellerier.eps_bound"])
+    built = stages.results(["cellerier.eps_bound"])
     assert sp.simplify(built["cellerier.delta_practical"].derived - practical.PRINTED["delta_practical"]) == 0
     assert sp.simplify(built["cellerier.example_delta"].derived - eps / 3) == 0
     assert sp.simplify(built["cellerier.g_error"].derived - 2 * eps / 3) == 0

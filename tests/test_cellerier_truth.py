@@ -4,13 +4,13 @@ import sympy as sp
 
 from derivations.cellerier import truth
 from derivations.cellerier.symbols import C, g, h, m, theta, x1dd, y1dd
-from pendsym import registry
+from pendsym import stages
 
 
 def test_lagrangian_theta_equation_is_the_memoirs_equation():
     # Euler–Lagrange θ-equation, y1'' free: C θ'' + mh cos θ y1'' + mgh sin θ = 0
     E_th, _ = truth.equations()
-    eq = registry.build(["cellerier.equation"])["cellerier.equation"]
+    eq = stages.results(["cellerier.equation"])["cellerier.equation"]
     rhs = eq.derived_value.subs({x1dd: 0})                     # −mgh sin θ + μ'(x1'' = 0)
     mine = sp.solve(E_th, truth.theta_acc)[0]
     theirs = (rhs / C).subs({sp.sin(theta): truth.sin_th, sp.cos(theta): truth.cos_th, y1dd: truth.y1_acc})

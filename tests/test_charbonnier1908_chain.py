@@ -8,7 +8,7 @@ from derivations.charbonnier1908.angle_examples import N21, N22, N23
 from derivations.charbonnier1908.elastic import N24
 from derivations.charbonnier1908.symbols import alpha, k, q, theta
 from derivations.charbonnier1908.variable_length import N27
-from pendsym import checks, pipeline, registry
+from pendsym import checks, stages
 
 
 def test_ids_and_sources_follow_the_paragraph_of_each_quantity():
@@ -46,11 +46,11 @@ def test_the_specs_of_an_example():
 
 @pytest.fixture(scope="module")
 def built():
-    return registry.build([N21.id("Es"), N22.id("Es")])
+    return stages.results([N21.id("Es"), N22.id("Es")])
 
 
 def test_quadrature_check_sides_with_the_derived_E_s(built):
-    ev = pipeline.check(built[N21.id("Es")], "quick")
+    ev = stages.assessed(built[N21.id("Es")])[1]
     assert ev.passed and ev.printed_agrees is True and ev.kind == "quadrature"
-    ev = pipeline.check(built[N22.id("Es")], "quick")   # n°22's printed E_s is wrong
+    ev = stages.assessed(built[N22.id("Es")])[1]   # n°22's printed E_s is wrong
     assert ev.passed and ev.printed_agrees is False

@@ -5,12 +5,12 @@ import sympy as sp
 from derivations.charbonnier1908 import general
 from derivations.charbonnier1908.common import rid
 from derivations.charbonnier1908.symbols import E_c, E_s, alpha, eps, k, t
-from pendsym import registry
+from pendsym import stages
 
 
 @pytest.fixture(scope="module")
 def built():
-    return registry.build([rid(9, q) for q in ("dT", "dalpha", "dThalf", "dthetam")])
+    return stages.results([rid(9, q) for q in ("dT", "dalpha", "dThalf", "dthetam")])
 
 
 def test_theta_of_n08_solves_the_perturbed_equation(built):

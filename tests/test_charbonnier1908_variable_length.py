@@ -5,14 +5,14 @@ import sympy as sp
 
 from derivations.charbonnier1908 import variable_length
 from derivations.charbonnier1908.symbols import a, alpha, k, l0, t
-from pendsym import checks, pipeline, registry
+from pendsym import checks, stages
 
 LAW = "charbonnier1908.n27.l"
 
 
 @pytest.fixture(scope="module")
 def built():
-    return registry.build([LAW, "charbonnier1908.n28.eom", "charbonnier1908.n35.curve", "charbonnier1908.n35.tangent_E"])
+    return stages.results([LAW, "charbonnier1908.n28.eom", "charbonnier1908.n35.curve", "charbonnier1908.n35.tangent_E"])
 
 
 def test_n27_states_the_law_as_a_definition(built):
@@ -20,7 +20,7 @@ def test_n27_states_the_law_as_a_definition(built):
     assert spec.definition and isinstance(spec.check, checks.Definition)
     assert (spec.source.para, spec.source.page) == ("n°27", 233)
     assert built[LAW].derived == l0 * (1 + a * t)
-    ev = pipeline.check(built[LAW], "quick")
+    ev = stages.assessed(built[LAW])[1]
     assert ev.kind == "definition" and ev.passed
 
 

@@ -9,7 +9,7 @@ from derivations.haag1935 import ch1_blade
 from derivations.haag1935.ch1_blade import derivation, printed
 from derivations.haag1935.common import rid
 from derivations.haag1935.symbols import M_of_s, Y, a, lam, m, s, theta, theta_ddot, v, v0, varphi, w, w0
-from pendsym import checks, pipeline, registry, verify
+from pendsym import checks, pipeline, stages, verify
 
 IDS = [spec.id for spec in ch1_blade.specs()]
 
@@ -42,7 +42,7 @@ def test_symmetric_forms_of_20():
 
 
 def test_end_slopes_are_a_definition_compared_exactly():
-    r = registry.build([rid(10, "bc")])[rid(10, "bc")]
+    r = stages.results([rid(10, "bc")])[rid(10, "bc")]
     assert checks.run(r.spec.check, r).passed
     assert not checks.run(r.spec.check, dataclasses.replace(r, printed=sp.Tuple(-1, 1, 0, 1))).passed
 
@@ -50,7 +50,7 @@ def test_end_slopes_are_a_definition_compared_exactly():
 # ---------------------------------------------------------------- slow: the built Results and their checks
 @pytest.fixture(scope="module")
 def built():
-    return registry.build(IDS)
+    return stages.results(IDS)
 
 
 @pytest.mark.slow
@@ -63,7 +63,7 @@ def test_printed_matches_derived_everywhere(built):
 @pytest.mark.parametrize("name", ["eq005.gy", "eq008.linear", "eq012.ends", "eq013.satisfies8", "eq013.phi_ends",
                                   "eq014.phip", "eq015.wronskian", "eq018.first", "eq019.lower", "eq020.vl"])
 def test_checks_pass(built, name):
-    ev = pipeline.check(built[f"haag1935.{name}"], "quick")
+    ev = stages.assessed(built[f"haag1935.{name}"])[1]
     assert ev.passed, ev.note
 
 

@@ -9,7 +9,7 @@ from derivations.haag1935 import ch1_blade, ch1_motion, profiles
 from derivations.haag1935.ch1_motion import derivation
 from derivations.haag1935.common import MEMOIR
 from derivations.haag1935.symbols import a, beta1, vl, wl, z, zp
-from pendsym import pipeline, registry, verify
+from pendsym import pipeline, stages, verify
 
 IDS = [spec.id for spec in ch1_motion.specs()]
 
@@ -45,7 +45,7 @@ def test_critical_distance_of_the_uniform_blade():
 # ---------------------------------------------------------------- slow: the built Results and their checks
 @pytest.fixture(scope="module")
 def built():
-    return registry.build(IDS)
+    return stages.results(IDS)
 
 
 @pytest.mark.slow
@@ -60,7 +60,7 @@ def test_printed_matches_derived_everywhere(built):
 @pytest.mark.parametrize("name", ["eq023.Y", "eq024.N", "eq026.motion", "eq029.focal", "eq030.quadratic", "eq036.K",
                                   "eq037.KKp", "eq039.lower", "eq041.a1", "eq041.unstable"])
 def test_checks_pass(built, name):
-    ev = pipeline.check(built[f"{MEMOIR}.{name}"], "quick")
+    ev = stages.assessed(built[f"{MEMOIR}.{name}"])[1]
     assert ev.passed, ev.note
 
 

@@ -7,7 +7,7 @@ from derivations.haag1935.ch3_uniform import derivation_pendulum as pendulum
 from derivations.haag1935.ch3_uniform import launch_symbols, printed
 from derivations.haag1935.common import rid
 from derivations.haag1935.symbols import K, U, U1, U2, a, b, k, lam, s, u, vl, wl, z, zp
-from pendsym import registry
+from pendsym import stages
 
 P = "haag1935"
 
@@ -45,7 +45,7 @@ def test_G_recurrence_matches_the_memoir_text():
 @pytest.mark.slow
 def test_Gamma_n_are_polynomials_in_k():
     ids = [rid(166, f"Gamma{m}") for m in (2, 3, 4, 5)]
-    built = registry.build(ids)
+    built = stages.results(ids)
     for m, i in zip((2, 3, 4, 5), ids):
         Gamma = built[i].derived
         assert K not in Gamma.free_symbols

@@ -5,7 +5,7 @@ import sympy as sp
 from derivations.haag1935 import MEMOIR, ch4_thread
 from derivations.haag1935.ch4_thread import derivation, printed
 from derivations.haag1935.symbols import K, a, lam, n, u, zp
-from pendsym import checks, pipeline, registry, verify
+from pendsym import checks, stages, verify
 
 P = "haag1935"
 IDS = tuple(spec.id for spec in ch4_thread.specs())
@@ -62,7 +62,7 @@ def test_the_heavy_thread_inertia_carries_K_cubed():
 # ---------------------------------------------------------------- the built chapter (slow)
 @pytest.fixture(scope="module")
 def built():
-    return registry.build(IDS)
+    return stages.results(IDS)
 
 
 @pytest.mark.slow
@@ -84,7 +84,7 @@ def test_discrepancies_the_truth_decides(built, rid, fix):
     does not; the corrected reading equals the derived form."""
     r = built[f"{P}.{rid}"]
     assert verify.compare_forms(r.printed_value, r.derived_value, r.id)[0] == "discrepancy"
-    ev = checks.run(r.spec.check, r, "quick")
+    ev = stages.assessed(r)[1]
     assert ev.passed and ev.printed_agrees is False
     assert verify.numeric_difference(fix(r.printed_value), r.derived_value, r.id) < 1e-40
 
@@ -92,13 +92,13 @@ def test_discrepancies_the_truth_decides(built, rid, fix):
 @pytest.mark.slow
 def test_all_checks_pass_quick(built):
     own = [built[i] for i in IDS if not isinstance(built[i].spec.check, checks.Chain)]
-    failed = [r.id for r in own if not pipeline.check(r, "quick").passed]
+    failed = [r.id for r in own if not stages.assessed(r)[1].passed]
     assert failed == []
 
 
 @pytest.mark.slow
 def test_limits_have_the_fitted_order(built):
-    ev = checks.run(built[f"{P}.eq185.I_J"].spec.check, built[f"{P}.eq185.I_J"], "quick")
+    ev = stages.assessed(built[f"{P}.eq185.I_J"])[1]
     assert ev.kind == "order" and abs(ev.order - 1) < 0.3
 
 

@@ -5,7 +5,7 @@ import sympy as sp
 from derivations.haag1935 import MEMOIR, ch5_point
 from derivations.haag1935.ch5_point import printed
 from derivations.haag1935.symbols import R, v0, w0
-from pendsym import checks, pipeline, registry, verify
+from pendsym import checks, stages, verify
 
 P = "haag1935"
 IDS = tuple(spec.id for spec in ch5_point.specs())
@@ -28,7 +28,7 @@ def test_every_check_is_a_declaration_of_the_engine():
 
 @pytest.fixture(scope="module")
 def built():
-    return registry.build(IDS)
+    return stages.results(IDS)
 
 
 @pytest.mark.slow
@@ -49,7 +49,7 @@ def test_discrepancies_the_eigenproblem_decides(built, rid, fix):
     """(204)–(205) print ν0 where w0 is derived; (207) prints +R² where (30) has −R²."""
     r = built[f"{P}.{rid}"]
     assert verify.compare_forms(r.printed_value, r.derived_value, r.id)[0] == "discrepancy"
-    ev = checks.run(r.spec.check, r, "quick")
+    ev = stages.assessed(r)[1]
     assert ev.passed and ev.printed_agrees is False
     assert verify.compare_forms(fix(r.printed_value), r.derived_value, r.id)[0] == "match"
 
@@ -57,14 +57,14 @@ def test_discrepancies_the_eigenproblem_decides(built, rid, fix):
 @pytest.mark.slow
 def test_all_checks_pass_quick(built):
     own = [built[i] for i in IDS if not isinstance(built[i].spec.check, checks.Chain)]
-    failed = [r.id for r in own if not pipeline.check(r, "quick").passed]
+    failed = [r.id for r in own if not stages.assessed(r)[1].passed]
     assert failed == []
 
 
 @pytest.mark.slow
 def test_beat_frequency_is_checked_in_the_time_domain(built):
     r = built[f"{P}.eq210.f"]
-    ev = checks.run(r.spec.check, r, "quick")
+    ev = stages.assessed(r)[1]
     assert "time domain" in ev.truth and ev.passed and abs(ev.order - 2) < 0.3
 
 

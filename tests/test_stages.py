@@ -38,3 +38,19 @@ def test_summary_counts_and_names_failures():
     assert lines[0].startswith("3 results: 1 verified, 1 failed, 1 definitions")
     assert len(lines) == 2 and lines[1].startswith("FAILED m.b")
     assert [r.result.id for r in stages.failures(recs)] == ["m.b"]
+
+
+def test_results_and_assessed_are_make_derives_own_work(tmp_path, monkeypatch):
+    """A test reads what make derive computed (same keys), and computes it when it is missing."""
+    monkeypatch.setenv("PENDSYM_CACHE", str(tmp_path / "cache"))
+    rid = "cellerier.mu_prime"
+    first = stages.results([rid])
+    assert rid in first and all(d in first for d in first[rid].spec.deps)
+    entries = sorted(p for p in (tmp_path / "cache").rglob("*") if p.is_file())
+    assert entries, "the built forms were not cached"
+    again = stages.results([rid])
+    assert again[rid].derived == first[rid].derived
+    (how, evidence) = stages.assessed(first[rid])
+    assert how == stages.assessed(again[rid])[0]
+    assert evidence is None or evidence.passed
+    assert len(sorted(p for p in (tmp_path / "cache").rglob("*") if p.is_file())) > len(entries)

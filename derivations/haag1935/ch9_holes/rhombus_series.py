@@ -78,4 +78,24 @@ def G2_series(order: int = 1) -> sp.Expr:
         for n in range(order + 1):
             coeff = integrand.coeff(k, n)
             total += k**n * sp.integrate(sp.expand(sp.expand_trig(coeff)), (sigma, lo, hi))
-    return omega**2 * total
+    return one_form(omega**2 * total)
+
+
+def one_form(expr: sp.Expr) -> sp.Expr:
+    """The one form of a rational function of ω, λ, k, sin(λω/2), cos(λω/2) (for the G_2 of n°110 in k).
+
+    The form ``integrate`` returns follows the state SymPy's caches were left in by what the process
+    computed before (a derive that finds other Results in its cache builds this one in another state),
+    so the form is fixed here from the value alone: over the fixed denominator (sin·cos·ω)^8,
+    the numerator reduced by cos² = 1 − sin² is unique; the common powers of sin and ω are cancelled."""
+    half = lam * omega / 2
+    sin_h, cos_h = sp.Dummy("sin_h"), sp.Dummy("cos_h")
+    numerator, denominator = sp.fraction(sp.together(expr.subs({sp.sin(half): sin_h, sp.cos(half): cos_h})))
+    fixed = (sin_h * cos_h * omega) ** 8
+    over = sp.cancel(fixed / denominator)
+    if not over.is_polynomial(sin_h, cos_h, omega):
+        raise ValueError(f"not over a power of sin·cos·ω: {denominator}")
+    reduced = sp.rem(sp.expand(numerator * over), cos_h**2 + sin_h**2 - 1, cos_h)
+    (p_sin, p_omega), reduced = sp.Poly(reduced, sin_h, omega).terms_gcd()
+    form = sp.collect(sp.expand(reduced.as_expr()), k) / (sin_h ** (8 - p_sin) * cos_h**8 * omega ** (8 - p_omega))
+    return form.subs({sin_h: sp.sin(half), cos_h: sp.cos(half)})
