@@ -250,13 +250,13 @@ def plan_of(level: str = "full") -> Plan:
 
 
 def results(ids=None, level: str = "full", memoirs=None) -> dict[str, Result]:
-    """The Results of ``ids`` (or of whole ``memoirs``) and their closure, built as ``make derive``
+    """The Results of ``ids`` (or of whole ``memoirs``, or all) and their closure, built as ``make derive``
     builds them: each form from the cache when this very code built it before (its key covers the
     sources it depends on), built here otherwise, and stored only under the string-hash seed a
     derive runs with (a SymPy form can follow it: see ``pendsym.cli``)."""
     pl = plan_of(level)
     if ids is None:
-        ids = [i for i in pl.order if pl.specs[i].memoir in set(memoirs)]
+        ids = [i for i in pl.order if memoirs is None or pl.specs[i].memoir in set(memoirs)]
     built: dict[str, Result] = {}
     _build_ids(pl, registry.closure(list(ids), pl.specs), built, keep=os.environ.get("PYTHONHASHSEED") == "0")
     return built

@@ -2,7 +2,6 @@
 verdict, on small kernels whose worst points are known."""
 import math
 
-import mpmath as mp
 import pytest
 import sympy as sp
 

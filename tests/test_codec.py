@@ -10,7 +10,7 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from pendsym import codec, registry
+from pendsym import codec, registry, stages
 from pendsym.emit import kernels as kn
 from pendsym.result import Evidence, KernelArg
 
@@ -180,7 +180,7 @@ def test_forms_of_one_memoir_round_trip():
 
 @pytest.fixture(scope="module")
 def every_result():
-    return registry.build()
+    return stages.results()
 
 
 @pytest.mark.slow

@@ -4,7 +4,7 @@ import sympy as sp
 
 from derivations.haag1935.ch2_common import F_110, H_moments, J, eps1, in_F
 from derivations.haag1935.ch2_general import derivation, printed, table, truth
-from derivations.haag1935.symbols import Fn, K, R, Y, a, g, theta, theta_ddot, theta_dot, z, zp
+from derivations.haag1935.symbols import Fn, K, R, Y, a, theta, theta_ddot, theta_dot, z, zp
 
 
 def test_first_order_terms_of_f_vanish_on_the_foci():

@@ -9,7 +9,7 @@ from derivations.haag1935 import ch6_short_blade
 from derivations.haag1935.ch6_short_blade import expansion, printed, truth
 from derivations.haag1935.common import rid
 from derivations.haag1935.symbols import DEFS, R, a, lam, u, v0, vl, w0, z
-from pendsym import checks, registry
+from pendsym import checks, stages
 from pendsym.result import Result
 
 L_OF_A = ((expansion.l, a + R**2 / a),)
@@ -17,7 +17,7 @@ L_OF_A = ((expansion.l, a + R**2 / a),)
 
 @pytest.fixture(scope="module")
 def built():
-    return registry.build([spec.id for spec in ch6_short_blade.specs()])
+    return stages.results([spec.id for spec in ch6_short_blade.specs()])
 
 
 # ---------------------------------------------------------------- expansion

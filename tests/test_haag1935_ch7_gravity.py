@@ -3,7 +3,7 @@ import mpmath as mp
 import sympy as sp
 
 from derivations.haag1935.ch7_gravity import derivation, printed, truth
-from derivations.haag1935.symbols import R, w0
+from derivations.haag1935.symbols import R
 
 
 def test_foci_at_the_critical_distance_are_w0_and_minus_R2_over_w0():

@@ -6,7 +6,7 @@ import math
 import mpmath as mp
 import pytest
 
-from pendsym import figure, registry, verify
+from pendsym import figure, stages, verify
 from derivations.haag1935 import MEMOIR
 from derivations.haag1935.ch7_gravity import figures as ch7
 from derivations.haag1935.ch8_inverted import figures as ch8, truth as ch8_truth
@@ -18,7 +18,7 @@ pytestmark = pytest.mark.slow
 @pytest.fixture(scope="module")
 def plots():
     cites = [i for f in MEMOIR.figures for i in f.cites]
-    built = registry.build(ids=cites)
+    built = stages.results(ids=cites)
     return {f.id: (f, figure.sample(f, built)) for f in MEMOIR.figures}, built
 
 

@@ -11,7 +11,7 @@ import shutil
 import mpmath as mp
 import pytest
 
-from pendsym import pipeline, registry
+from pendsym import pipeline, registry, stages
 from pendsym.emit import kernels as kn
 
 BOUND = 4.0
@@ -22,7 +22,7 @@ MEMOIRS = tuple(registry.memoirs())
 def kernel_table(generated):
     """(memoir, kernel name, Result, arguments) for every kernel listed in results.json."""
     data = pipeline.load_results_json(generated / "results.json")
-    built = registry.build()
+    built = stages.results()
     out = []
     for rid, rec in data.items():
         for name in rec["kernels"]:

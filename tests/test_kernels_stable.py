@@ -9,7 +9,7 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from pendsym import registry
+from pendsym import registry, stages
 from pendsym.emit import kernels as kn
 from pendsym.result import KernelArg
 
@@ -91,7 +91,7 @@ def test_K_kernel_holds_where_the_form_of_35_cancels(haag_py):
     """K through (36) and the stable root z: within the bound from u = 1e-6 to 700 and for short
     blades; the same K through (35), evaluated in double, loses everything as u → 0."""
     ids = ["haag1935.eq036.K_uniform", "haag1935.eq035.K_uniform", "haag1935.eq034.n2_z_uniform"]
-    rs = registry.build(ids)
+    rs = stages.results(ids)
     r36, r35, rn2 = (rs[i] for i in ids)
     args = r36.spec.kernel.args
     pts = [(a, R, lam, uv) for uv in (1e-6, 1e-3, 0.7, 30.0, 700.0)

@@ -88,6 +88,8 @@ def test_the_characters_the_issue_names(char, tex):
     ("mpmath lu_solve", r"mpmath \texttt{lu\_\allowbreak{}solve}"),
     ("pendsym.blade", r"\texttt{pendsym.\allowbreak{}blade}"),
     ("100% & $5 #1", r"100\% \& \$5 \#1"),
+    ("∫_0^s' φ ds''", r"$\int _{0}^{s'}$ $\varphi$ ds$''$"),      # the prime in the bound, not a 2nd superscript
+    ("θ∭ ds", r"$\theta \iiint$ ds"),
 ])
 def test_markup_of_the_texts_is_set_as_math(text, tex):
     assert tex_text(text) == tex

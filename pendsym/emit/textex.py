@@ -53,7 +53,7 @@ MATH_CHARS = {
     "−": "-", "±": r"\pm", "∓": r"\mp", "×": r"\times", "·": r"\cdot", "÷": r"\div", "∘": r"\circ",
     "≡": r"\equiv", "≤": r"\le", "≥": r"\ge", "≠": r"\ne", "≈": r"\approx", "≃": r"\simeq", "∼": r"\sim",
     "≪": r"\ll", "≫": r"\gg", "∝": r"\propto", "∈": r"\in", "∉": r"\notin", "⊂": r"\subset", "∩": r"\cap",
-    "∪": r"\cup", "⊥": r"\perp", "∥": r"\parallel", "∞": r"\infty", "√": r"\surd", "∫": r"\int", "∮": r"\oint",
+    "∪": r"\cup", "⊥": r"\perp", "∥": r"\parallel", "∞": r"\infty", "√": r"\surd", "∫": r"\int", "∬": r"\iint", "∭": r"\iiint", "∮": r"\oint",
     "∑": r"\sum", "∏": r"\prod", "∀": r"\forall", "∃": r"\exists", "∅": r"\emptyset",
     "→": r"\to", "←": r"\leftarrow", "↔": r"\leftrightarrow", "⇄": r"\rightleftarrows", "⇒": r"\Rightarrow",
     "⇔": r"\Leftrightarrow", "↦": r"\mapsto", "⟨": r"\langle", "⟩": r"\rangle", "▶": r"\blacktriangleright",
@@ -309,6 +309,9 @@ def _script_arg(s: str, i: int, sup: bool) -> tuple[str, int] | None:
             j += 1
         return None
     m = (_SUP_WORD if sup else _SCRIPT_WORD).match(s, i)
+    if m and sup:                      # ∫_0^s' : the primes belong to the bound (a prime after ^{s} is a
+        primes = re.compile(r"['′″‴]*").match(s, m.end())          # double superscript)
+        return m.group() + primes.group(), primes.end()
     if m:
         return m.group(), m.end()
     if s[i] in MATH_CHARS and (MATH_CHARS[s[i]].startswith("\\") or s[i] in "′"):
