@@ -2,10 +2,8 @@
 import mpmath as mp
 import sympy as sp
 
-from derivations.haag1935.ch2_common import i_clamp, j_eq, theta0
 from derivations.haag1935.ch2_dissymmetry import derivation, printed, truth
-from derivations.haag1935.ch2_perturbations.derivation import g_fn
-from derivations.haag1935.symbols import K, Q, a, s, vl, z, zp
+from derivations.haag1935.symbols import z, zp
 
 
 def test_151_and_the_moment_as_printed():

@@ -18,7 +18,7 @@ from ..ch2_clamping import derivation as clamping
 from ..ch2_common import i_clamp, i_prime, j_eq, theta0, theta1
 from ..ch2_general import derivation as general
 from ..ch2_perturbations.derivation import _single_integral, eq139, f_of_moment, g_fn, q
-from ..symbols import K, M_of_s, Q, Y, a, a1, lam, s, theta, v, vl, w, wl, z, zp
+from ..symbols import K, M_of_s, Q, Y, a1, lam, s, theta, v, w, wl, z, zp
 
 eps_E = sp.Function("varepsilon")              # ε(s) = ΔE/E, the excess of the modulus on the right (n°44)
 A_d, B_d = sp.symbols("A B", real=True)        # (152)

@@ -12,13 +12,11 @@ Cost (cold): three odefun pieces per point, four points and a confirmation, abou
 from __future__ import annotations
 
 import mpmath as mp
-import sympy as sp
 
 from pendsym import checks, verify
-from ..ch2_common import i_clamp, j_eq, theta0
 from ..ch2_perturbations.derivation import g_fn
-from ..symbols import K, Q, a, n_squared, s, vl, wl, z
-from .derivation import A_d, B_d, C_j, eps_E
+from ..symbols import s
+from .derivation import eps_E
 
 # (154): any i, j; (155): i of (117) with i' = 0 and B = g_1 − AK, K = (a + wλ)/(a − vλ + z) (36)
 BASE = {"n": "1.3", "Q": "0.8", "theta_0": "0.05", "j": "-0.02"}
