@@ -64,3 +64,30 @@ def test_truth_agrees_with_154_to_first_order_and_not_with_the_other_side():
 def test_truth_without_dissymmetry_is_the_free_period():
     with mp.workdps(30):
         assert abs(truth.period_change("154", "0", 20)) < mp.mpf(10) ** -18
+
+
+# ---------------------------------------------------------------- n°46
+def test_friction_with_clamping_errors_the_two_symmetric_cases():
+    from derivations.haag1935.ch2_dissymmetry import friction
+    assert all(x == 0 for x in friction.case_equal_differences())
+    assert all(x == 0 for x in friction.case_no_curvature())
+    # neither case: the odd part is proportional to (b − a) − (b' − a'), not 0
+    odd = friction.odd_p1q1()
+    assert sp.simplify(odd) != 0
+    assert sp.simplify(odd.subs(friction.b_l, friction.b_r - friction.a_r + friction.a_l)) == 0
+
+
+def test_friction_truth_is_not_symmetric_and_matches_the_odd_part():
+    """At ε = 0.01 the integrated periods at j and −j differ by twice the derived odd part, to 1 %."""
+    from derivations.haag1935.ch2_dissymmetry import friction
+    F = truth.FRICTION_46
+    with mp.workdps(30):
+        odd = (truth.friction_period(F["j"], "0.01", 20) - truth.friction_period("-" + F["j"], "0.01", 20)) / 2
+        env = {sp.Symbol(k, real=True): sp.Rational(F[k]) * sp.Rational(1, 100) for k in ("a_pq", "b_pq", "a'_pq", "b'_pq")}
+        form = friction.odd_p1q1().subs(env).subs({sp.Symbol("n", positive=True): sp.Rational(F["n"]),
+                                                    sp.Symbol("Q", positive=True): sp.Rational(F["Q"]),
+                                                    sp.Symbol("theta_0", positive=True): sp.Rational(F["theta_0"]),
+                                                    sp.Symbol("j", real=True): sp.Rational(F["j"])})
+        form = mp.mpf(sp.N(form, 30))
+        assert abs(odd) > mp.mpf(10) ** -8
+        assert abs(odd - form) < mp.mpf("0.01") * abs(form)

@@ -1,4 +1,4 @@
-"""Haag 1935, chapter II, n°44–45, eqs. (151)–(155): the dissymmetric blade, the Results."""
+"""Haag 1935, chapter II, n°44–46, eqs. (151)–(155): the dissymmetric blade, friction with clamping errors, the Results."""
 from __future__ import annotations
 
 import sympy as sp
@@ -6,7 +6,7 @@ import sympy as sp
 from pendsym import checks
 from pendsym.result import Spec
 from ..common import READ_VW, rid, src, step
-from . import derivation, printed, truth
+from . import derivation, friction, printed, truth
 from .printed import READ_152, READ_DPHI, READ_EPS4, READ_LIMITS, READ_NU
 
 EXACT = "symbolic proof (SymPy)"
@@ -22,6 +22,10 @@ def _odd_nonzero(expr) -> bool:
     at = expr.subs({derivation.A_d: 0}).replace(lambda e: isinstance(e, sp.Function) and e.func.__name__ == "g",
                                                  lambda e: sp.S.One)
     return sp.simplify(at.subs(derivation.phi1, sp.Rational(1, 3))) != 0
+
+
+def _zeros(expr) -> bool:
+    return len(expr) > 0 and all(sp.simplify(e) == 0 for e in expr)
 
 
 def specs() -> tuple[Spec, ...]:
@@ -62,4 +66,19 @@ def specs() -> tuple[Spec, ...]:
              src(45, None), r"\tfrac12[P(\varphi_1) - P(-\varphi_1)]", step(derivation.odd_part_155), printed=None,
              check=checks.Proof("the odd part of P in φ1 (φ1 odd in j) at g_1 = 1, A = 0, φ1 = 1/3 is not 0",
                                 holds=_odd_nonzero, truth=EXACT)),
+        # ---------------------------------------------------------------- n°46
+        Spec(rid(155, "friction_odd"), "friction with clamping errors: the part of ΔT/T odd in j (p = q = 1)",
+             src(46, None), r"\tfrac12[\tfrac{\Delta T}{T}(j) - \tfrac{\Delta T}{T}(-j)]", step(friction.odd_p1q1),
+             printed=None, check=truth.friction_odd_order(),
+             note="(146) about the tilted equilibrium in θ = j + θ1, by (114) over the four arcs; ∝ (b − a) − (b' − a'). "
+                  "The text gives no formula (derived only)."),
+        Spec(rid(155, "friction_case1"), "T symmetric about the vertical when b − a = b' − a'", src(46, None),
+             r"\text{odd parts}", step(friction.case_equal_differences), printed=lambda: sp.Tuple(*[0] * len(friction.DEGREES)),
+             check=checks.Proof("the odd parts in j at (p, q) = (1, 0), (1, 1), (2, 0), (2, 1), (1, 2) with b' = b − a + a'",
+                                holds=_zeros, truth=EXACT),
+             note="First case of n°46, on the reduced equation of :func:`friction.period`."),
+        Spec(rid(155, "friction_case2"), "T symmetric about the vertical when the friction is independent of the curvature",
+             src(46, None), r"\text{odd parts}", step(friction.case_no_curvature), printed=lambda: sp.Tuple(0, 0, 0, 0),
+             check=checks.Proof("the odd parts in j at p = 0, q = 0 … 3, any a, b, a', b'", holds=_zeros, truth=EXACT),
+             note="Second case of n°46."),
     )

@@ -86,3 +86,58 @@ def order(name: str) -> checks.Order:
                         note=("φ1 = asin(−j/θ0); g_1, A, B scaled by ε" if name == "154" else
                               "C = 0 (the (134) part is checked in n°35); wλ from K of (36), i of (117) with i' = 0, "
                               "B = g_1 − AK; P/(4Q) compared"))
+
+
+# ---------------------------------------------------------------- n°46: friction with clamping errors
+FRICTION_46 = {"p": 1, "q": 1, "n": "1.3", "Q": "0.8", "theta_0": "0.05", "j": "0.02",
+               "a_pq": "0.3", "b_pq": "0.7", "a'_pq": "0.2", "b'_pq": "0.5"}
+FRICTION_STRENGTHS = ("0.001", "0.1")
+
+
+def friction_period(j: str, eps, dps: int):
+    """Tn/(2π) − 1 of θ1'' = −n²θ1 − sign(θ1')(n²/Q)εC|j + θ1|^p|θ1'|^q from the maximum θ1 = θ0 to the next,
+    C = b (right, back), a' (left, out), b' (left, back), a (right, out), the sides parted at θ1 = −j: odefun on
+    each arc, its end (θ1 = −j or θ1' = 0) by findroot on the dense solution."""
+    with mp.workdps(dps + 10):
+        F = {k: mp.mpf(v) if isinstance(v, str) else v for k, v in FRICTION_46.items()}
+        e, jv = mp.mpf(eps), mp.mpf(j)
+        n, Qv, p, q = F["n"], F["Q"], F["p"], F["q"]
+        cross = mp.acos(-jv / F["theta_0"]) / n
+        # (coefficient, sign of θ1', ends at θ1' = 0, guess of the end)
+        arcs = ((F["b_pq"], -1, False, cross), (F["a'_pq"], -1, True, mp.pi / n),
+                (F["b'_pq"], 1, False, 2 * mp.pi / n - cross), (F["a_pq"], 1, True, 2 * mp.pi / n))
+        t, state = mp.mpf(0), [F["theta_0"], mp.mpf(0)]
+        tol = mp.mpf(10) ** (-(dps + 8))
+        for C, sg, on_rate, guess in arcs:
+            def rhs(_, y, C=C, sg=sg):
+                return [y[1], -n**2 * y[0] - sg * n**2 / Qv * e * C * abs(jv + y[0]) ** p * abs(y[1]) ** q]
+            sol = mp.odefun(rhs, t, state, tol=tol)
+            k = 1 if on_rate else 0
+            t = mp.findroot(lambda x: sol(x)[k] + (0 if on_rate else jv), guess, tol=mp.mpf(10) ** (-2 * (dps + 6)))
+            state = list(sol(t))
+            if on_rate:
+                state[1] = mp.mpf(0)
+        return t * n / (2 * mp.pi) - 1
+
+
+def friction_odd_order() -> checks.Order:
+    """n°46: the odd part [ΔT/T(j) − ΔT/T(−j)]/2 at p = q = 1 against the integrated reduced equation at j and
+    −j: residual O(ε²)."""
+    def truth(eps, dps):
+        e = mp.nstr(mp.mpf(eps), 20)
+        j = FRICTION_46["j"]
+        return (friction_period(j, e, dps) - friction_period("-" + j, e, dps)) / 2
+
+    def at(expr, eps):
+        e = mp.mpf(eps)
+        F = FRICTION_46
+        env = {"n": F["n"], "Q": F["Q"], "theta_0": F["theta_0"], "j": F["j"],
+               **{k: e * mp.mpf(F[k]) for k in ("a_pq", "b_pq", "a'_pq", "b'_pq")}}
+        return verify.value_at(expr, env)
+    return checks.Order(param="ε", values=lambda level: verify.geometric(*FRICTION_STRENGTHS, POINTS), truth=truth,
+                        at=at, expected=2,
+                        truth_desc="θ1'' = −n²θ1 − sign(θ1')(n²/Q)εC|j + θ1|^p|θ1'|^q (C = b right back, a' left out, "
+                                   "b' left back, a right out; sides parted at θ = j + θ1 = 0) integrated by odefun "
+                                   "arc by arc over one period at j and at −j: [Tn/(2π)(j) − Tn/(2π)(−j)]/2",
+                        params=tuple((k, str(v)) for k, v in FRICTION_46.items()),
+                        note="the friction of (146) written in θ = j + θ1 (curvature in proportion to θ)")
