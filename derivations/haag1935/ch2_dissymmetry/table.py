@@ -76,7 +76,7 @@ def specs() -> tuple[Spec, ...]:
              r"\text{odd parts}", step(friction.case_equal_differences), printed=lambda: sp.Tuple(*[0] * len(friction.DEGREES)),
              check=checks.Proof("the odd parts in j at (p, q) = (1, 0), (1, 1), (2, 0), (2, 1), (1, 2) with b' = b − a + a'",
                                 holds=_zeros, truth=EXACT),
-             note="First case of n°46, on the reduced equation of :func:`friction.period`."),
+             note="First case of n°46, on the reduced equation with the friction in θ = j + θ1 (as friction_odd)."),
         Spec(rid(155, "friction_case2"), "T symmetric about the vertical when the friction is independent of the curvature",
              src(46, None), r"\text{odd parts}", step(friction.case_no_curvature), printed=lambda: sp.Tuple(0, 0, 0, 0),
              check=checks.Proof("the odd parts in j at p = 0, q = 0 … 3, any a, b, a', b'", holds=_zeros, truth=EXACT),
