@@ -111,3 +111,45 @@ def test_inertia_and_weight_together_add_135_and_136():
         p = mp.mpf(ratio)
         formula = (-p * env["I_unit"] / (2 * env["z'"] * (env["z"] - env["z'"])) - p * env["J_unit"] / env["Q"])
         assert abs(true - formula) < mp.mpf("0.01") * abs(formula)
+
+
+# ---------------------------------------------------------------- (145), n°43 (150)
+def test_145_is_the_outgoing_term_with_the_opposite_sign_when_b_equals_a():
+    """(145) as printed; with b = a the incoming ε is minus the outgoing one at the same |c'| (friction opposes
+    the motion both ways), which a sign error in the replacement would break."""
+    from derivations.haag1935.ch2_perturbations import derivation_experiment as exp
+    f = derivation_friction
+    assert sp.simplify(exp.eq145() - printed.eq145()) == 0
+    rate = sp.Symbol("r", positive=True)
+    incoming = exp.eq145().subs({f.b_f: f.a_f, f.c_rate: rate})
+    outgoing = f.friction_moment().subs(f.c_rate, rate)
+    assert sp.simplify(incoming + outgoing) == 0
+    assert sp.simplify(incoming - outgoing) != 0
+
+
+def test_150_powers_and_alpha00():
+    from derivations.haag1935.ch2_perturbations import derivation_experiment as exp
+    assert sp.simplify(exp.eq150_period() - printed.eq150_period()) == 0
+    assert sp.simplify(exp.eq150_amplitude() - printed.eq150_amplitude()) == 0
+    at2 = exp.eq150_period().subs(exp.p_first, 2)
+    assert at2.has(exp.theta0**-1) and at2.has(exp.theta0) and at2.has(exp.theta0**2)
+    assert exp.alpha00() - printed.alpha00() == 0
+    # exchanging the outgoing and incoming coefficients changes the sign of the condition
+    swapped = exp.alpha00().subs({exp.a00: exp.b00, exp.b00: exp.a00, exp.ap00: exp.bp00, exp.bp00: exp.ap00},
+                                 simultaneous=True)
+    assert sp.simplify(swapped + exp.alpha00()) == 0
+
+
+def test_no_dissymmetry_but_a_change_of_total_friction_is_seen():
+    from derivations.haag1935.ch2_perturbations import derivation_experiment as exp
+    f = derivation_friction
+    assert all(x == 0 for x in exp.no_dissymmetry())
+    d = sp.Symbol("d", real=True)
+    moved = f.eq147().xreplace({f.a_f: f.a_f + d, f.bp_f: f.bp_f - d})    # outgoing right → incoming left
+    assert sp.simplify(moved - f.eq147()) != 0
+    alpha, beta = exp.alpha_beta()
+    assert sp.simplify(alpha - printed.alpha_beta()[0]) == 0 and sp.simplify(beta - printed.alpha_beta()[1]) == 0
+    half_a, half_b = exp.means()
+    vals = {exp.alpha_f: alpha, exp.beta_f: beta}
+    assert sp.simplify(half_a.subs(vals) - (f.a_f + f.ap_f) / 2) == 0
+    assert sp.simplify(half_b.subs(vals) - (f.b_f + f.bp_f) / 2) == 0

@@ -6,7 +6,7 @@ the report's headings group the Results of a chapter by equation number.
 from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
-from . import ch2_clamping, ch2_perturbations
+from . import ch2_clamping, ch2_dissymmetry, ch2_perturbations
 from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
 from .ch7_gravity import figures as ch7_figures
 from .ch8_inverted import figures as ch8_figures
@@ -31,7 +31,9 @@ CHAPTER_2 = (
     Section.of(ch2_clamping, "Chapter II. Clamping errors and their interaction with the isochronism error (116)–(134)"),
     # the checks of (135)–(136) share the blades with mass and their quadratures
     Section.of(ch2_perturbations.table_mass, "Chapter II. The blade's inertia and weight (135)–(136)", shared=True),
-    Section.of(ch2_perturbations.table_law, "Chapter II. Le Rolland's moment law, internal friction (137)–(149)"),
+    Section.of(ch2_perturbations.table_law, "Chapter II. Le Rolland's moment law, internal friction (137)–(150)"),
+    Section.of(ch2_dissymmetry, "Chapter II. The dissymmetric blade, the symmetric clock, friction with clamping "
+                                "errors (151)–(155)"),
 )
 CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
@@ -58,8 +60,10 @@ HEADINGS = (
     ("Chapter II. General theory of perturbations: f, ΔX, ΔY, ΔN (88)–(105)", _eqs(88, 105, CHAPTER_2)),
     ("Chapter II. The isochronism error and the classical formula (106)–(115)", _eqs(106, 115, CHAPTER_2)),
     ("Chapter II. Clamping errors (116)–(134)", _eqs(116, 134, CHAPTER_2)),
-    ("Chapter II. The blade's inertia and weight, Le Rolland's moment law, internal friction (135)–(149)",
-     _eqs(135, 149, CHAPTER_2)),
+    ("Chapter II. The blade's inertia and weight, Le Rolland's moment law, internal friction (135)–(150)",
+     _eqs(135, 150, CHAPTER_2)),
+    ("Chapter II. The dissymmetric blade, the symmetric clock, friction with clamping errors (151)–(155)",
+     _eqs(151, 155, CHAPTER_2)),
     ("Chapter III. The uniform blade: v, w and the functions U, U1, U2 (156)–(161)", _eqs(156, 161, CHAPTER_3)),
     ("Chapter III. The integrals Γ_n (162)–(166)", _eqs(162, 166, CHAPTER_3)),
     ("Chapter III. The integrals F_n and F (167)–(170)", _eqs(167, 170, CHAPTER_3)),
@@ -80,9 +84,9 @@ HEADINGS = (
 MEMOIR = Memoir(
     key="haag1935",
     title=("J. Haag, Théorie de la suspension élastique des pendules (1935): chapter I, first approximation "
-           "for any M(s), eqs. (1)–(87); chapter II, n°26–42, the second approximation: the isochronism and "
-           "clamping errors, the blade's inertia and weight, internal friction, eqs. (88)–(149); chapter III, "
-           "the uniform blade, eqs. (156)–(183); chapters IV–V, "
+           "for any M(s), eqs. (1)–(87); chapter II, n°26–46, the second approximation: the isochronism and "
+           "clamping errors, the blade's inertia and weight, internal friction, the dissymmetric blade, "
+           "eqs. (88)–(155); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
            "the thread, the point pendulum and beats, eqs. (184)–(211); chapter VI, the short blade, "
            "eqs. (212)–(240); chapters VII–VIII, the gravity pendulum direct and inverted, eqs. (255)–(317); "
            "chapter IX, blades with a hole, eqs. (321)–(346)"),

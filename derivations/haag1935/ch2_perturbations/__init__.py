@@ -1,9 +1,10 @@
-"""Haag 1935, chapter II, n°36–42, eqs. (135)–(149): the blade's inertia and weight, Le Rolland's moment law,
+"""Haag 1935, chapter II, n°36–43, eqs. (135)–(150): the blade's inertia and weight, Le Rolland's moment law,
 internal friction.
 
 :mod:`.derivation` (SymPy, from (104)–(105) of n°28), :mod:`.printed` (the text and its readings), :mod:`.truth`
 (the pendulum on a blade with mass, :mod:`pendsym.massive_blade`; the stiffer linear blade; the reduced damped
-equation), :mod:`.table_mass` (n°36–37) and :mod:`.table_law` (n°38–42).
+equation), :mod:`.table_mass` (n°36–37) and :mod:`.table_law` (n°38–43; (145) and n°43 derived in
+:mod:`.derivation_experiment`).
 """
 from . import table_law, table_mass
 
@@ -11,7 +12,7 @@ from . import table_law, table_mass
 def sections():
     """(module, title) of the two Result tables."""
     return ((table_mass, "Chapter II. The blade's inertia and weight (135)–(136)"),
-            (table_law, "Chapter II. Le Rolland's moment law, internal friction (137)–(149)"))
+            (table_law, "Chapter II. Le Rolland's moment law, internal friction (137)–(150)"))
 
 
 __all__ = ["sections", "table_law", "table_mass"]

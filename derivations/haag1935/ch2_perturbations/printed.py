@@ -1,4 +1,4 @@
-"""Haag 1935, chapter II, n°36–39: the formulas (135)–(143) as printed, with their OCR readings.
+"""Haag 1935, chapter II, n°36–43: the formulas (135)–(150) as printed, with their OCR readings.
 
 Haag's moment increment of the blade's equation (7) (the ε of (105)) comes out of the OCR as ε_1, ε_i, s_1,
 ε_s or ε_4; it is read as ε, the ε(s) of (105), everywhere here.  Nested integrals are written with Haag's
@@ -13,6 +13,7 @@ from ..ch2_common import theta0
 from ..symbols import G_2, Gn, K, M_of_s, Q, g, lam, m, mb, n_squared, s, theta, v, w, x_of_s, y_of_s, z, zp
 from ..symbols import varphi1, varphi2
 from .derivation import I_lambda, J_w, a_q, c_curv, dE_E, g_fn, i_fn, mu, q, s1, s2, y_dd
+from .derivation_experiment import A150, A150p, B150, B150p, C150, C150p, a00, ap00, b00, bp00, p_first
 from .derivation_friction import a_f, ap_f, b_f, bp_f, c_rate, n_freq, p_f, theta_dot
 
 
@@ -175,3 +176,40 @@ def first_line_149():
 # g_q(x) of (139) is linear in x: g(b + b' − a − a') = (b + b' − a − a')g(1) for constant coefficients
 DEFS_147 = ((g_fn(p_f + q, b_f + bp_f - a_f - ap_f), (b_f + bp_f - a_f - ap_f) * g_fn(p_f + q, 1)),)
 DEFS_149 = ((g_fn(p_f + q, a_f + b_f + ap_f + bp_f), (a_f + b_f + ap_f + bp_f) * g_fn(p_f + q, 1)),)
+
+
+# ---------------------------------------------------------------- (145), n°43 (150)
+
+READ_145 = Reading("M(ΣΣ b_pq c^p c'^q), c' in absolute value: a diminution of the absolute value of the moment (145)",
+                   "ε = +M b_pq c^p|c'|^q for θ > 0, θ' < 0: the text gives the magnitude; the sign is n°41's "
+                   "replacement a → −b (the outgoing (144) is ε = −M a c^p c'^q)", certain=False)
+READ_ALPHA = Reading("a_pq = b_pq + b'_pq − a_pq − a'_pq (n°43)", "α_pq = … (the OCR renders α_pq as a_pq; the text "
+                     "names α_pq, β_pq and α_00 next)")
+
+
+def eq145():
+    return M_of_s(s) * b_f * c_curv ** p_f * sp.Abs(c_rate) ** q
+
+
+def alpha_beta():
+    return sp.Tuple(b_f + bp_f - a_f - ap_f, b_f + bp_f + a_f + ap_f)
+
+
+def no_dissymmetry():
+    """n°43: 'impossible de déceler une dissymétrie': (147), (149) unchanged by moving friction across."""
+    return sp.Tuple(0, 0)
+
+
+def eq150_period():
+    return A150 / theta0 + B150 * theta0 ** (p_first - 1) + C150 * theta0 ** p_first
+
+
+def eq150_amplitude():
+    return A150p + B150p * theta0 ** p_first + C150p * theta0 ** (p_first + 1)
+
+
+def alpha00():
+    """a_00 + a'_00 = b_00 + b'_00, as the difference."""
+    return a00 + ap00 - b00 - bp00
+
+

@@ -1,4 +1,4 @@
-"""Haag 1935, chapter II, n°38–42, eqs. (137)–(149): Le Rolland's moment law and internal friction, the Results."""
+"""Haag 1935, chapter II, n°38–43, eqs. (137)–(150): Le Rolland's moment law and internal friction, the Results."""
 from __future__ import annotations
 
 import sympy as sp
@@ -6,8 +6,8 @@ import sympy as sp
 from pendsym import checks
 from pendsym.result import Spec
 from ..common import READ_VW, rid, src, step
-from . import derivation, derivation_friction, printed, truth
-from .printed import READ_139, READ_147_I, READ_BETA, READ_EPS, READ_G0
+from . import derivation, derivation_experiment, derivation_friction, printed, truth
+from .printed import READ_139, READ_145, READ_147_I, READ_ALPHA, READ_BETA, READ_EPS, READ_G0
 
 EXACT = "symbolic proof (SymPy)"
 YOUNG = rid(141, "dT")
@@ -16,6 +16,18 @@ FRICTION_T, FRICTION_AMP = rid(147, "dT"), rid(149, "amplitude")
 
 def _is(target):
     return lambda expr: sp.simplify(expr - target) == 0
+
+
+def _zero(expr) -> bool:
+    return all(sp.simplify(e) == 0 for e in expr)
+
+
+def _means_hold(expr) -> bool:
+    """The half-sums from α, β are ½(a + a'), ½(b + b') once α, β are put back (:func:`derivation_experiment.alpha_beta`)."""
+    alpha, beta = derivation_experiment.alpha_beta()
+    back = expr.subs({derivation_experiment.alpha_f: alpha, derivation_experiment.beta_f: beta})
+    f = derivation_friction
+    return _zero(sp.Tuple(back[0] - (f.a_f + f.ap_f) / 2, back[1] - (f.b_f + f.bp_f) / 2))
 
 
 def _same_as_60(deps):
@@ -68,6 +80,11 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(144, "eps"), "ε of the outgoing friction: −Ma_pq c^p c'^q", src(40, "144"), r"\varepsilon",
              step(derivation_friction.friction_moment), printed=printed.friction_moment, readings=(READ_BETA,),
              check=checks.Chain((FRICTION_T,)), note="One term of (144); c' = dc/dt."),
+        Spec(rid(145, "eps"), "ε of the incoming friction: +Mb_pq c^p|c'|^q (θ > 0, θ' < 0)", src(40, "145"),
+             r"\varepsilon", step(derivation_experiment.eq145), printed=printed.eq145, readings=(READ_145,),
+             check=checks.Chain((FRICTION_T, FRICTION_AMP)),
+             note="n°41's replacement a → −b, c' → −c' = |c'| in one term of (144); b_pq is the coefficient of the "
+                  "truth's quadrant 'right, going back'."),
         Spec(rid(146, "f"), "f = −(n²/K)g_{p+q}(a_pq)θ^pθ'^q", src(41, "146"), "f", step(derivation_friction.eq146),
              printed=printed.eq146, check=checks.Chain((FRICTION_T, FRICTION_AMP)),
              note="(104)–(105) with c = θ(Kv + w)/M, c' = θ'(Kv + w)/M; the integral recognised as g_{p+q}."),
@@ -84,4 +101,33 @@ def specs() -> tuple[Spec, ...]:
         Spec(FRICTION_AMP, "Δθ0 per period (damping)", src(42, "149"), r"\Delta\theta_0", step(derivation_friction.eq149),
              printed=printed.eq149, defs=printed.DEFS_149, readings=(READ_147_I,), check=truth.friction_order(1),
              note="Checked at p = q = 1 on the reduced equation, as (147)."),
+        # ---------------------------------------------------------------- n°43
+        Spec(rid(150, "alpha_beta"), "α_pq = b + b' − a − a', β_pq = b + b' + a + a'", src(43, None),
+             r"(\alpha_{pq}, \beta_{pq})", step(derivation_experiment.alpha_beta), printed=printed.alpha_beta,
+             readings=(READ_ALPHA,), check=checks.Definition(), definition=True,
+             note="Read off the derived (147) and (149): the only combinations of a, a', b, b' they hold."),
+        Spec(rid(150, "means"), "½(a + a') and ½(b + b') follow from α, β", src(43, None),
+             r"(\tfrac12(a + a'), \tfrac12(b + b'))", step(derivation_experiment.means), printed=None,
+             check=checks.Proof("the sums solved from α, β, with α, β of (147), (149) put back, are ½(a + a'), "
+                                "½(b + b')", holds=_means_hold, truth=EXACT)),
+        Spec(rid(150, "no_dissymmetry"), "no dissymmetry of the friction can be seen in T(θ0), Δθ0(θ0)", src(43, None),
+             r"(\Delta(147), \Delta(149))", step(derivation_experiment.no_dissymmetry), printed=printed.no_dissymmetry,
+             check=checks.Proof("(147), (149) (derived) unchanged by a → a + d, a' → a' − d, b → b + e, b' → b' − e",
+                                holds=_zero, truth=EXACT)),
+        Spec(rid(150, "dT"), "ΔT/T = a/θ0 + bθ0^{p−1} + cθ0^p + …", src(43, "150"), r"\frac{\Delta T}{T}",
+             step(derivation_experiment.eq150_period), printed=printed.eq150_period,
+             check=checks.Proof("θ0^{p+q−1} of (147) (derived) at the degrees p + q = 0, p, p + 1",
+                                holds=lambda e: sp.simplify(e - printed.eq150_period()) == 0, truth=EXACT),
+             note="p: the degree of the first non-constant friction term; a, b, c stand for the sums of (147)'s "
+                  "coefficients at each degree."),
+        Spec(rid(150, "amplitude"), "Δθ0 = a' + b'θ0^p + c'θ0^{p+1} + …", src(43, "150"), r"\Delta\theta_0",
+             step(derivation_experiment.eq150_amplitude), printed=printed.eq150_amplitude,
+             check=checks.Proof("θ0^{p+q} of (149) (derived) at the degrees p + q = 0, p, p + 1",
+                                holds=lambda e: sp.simplify(e - printed.eq150_amplitude()) == 0, truth=EXACT)),
+        Spec(rid(150, "alpha00"), "Le Rolland's aθ0 + bθ0² + cθ0³ means α_00 = 0: a_00 + a'_00 = b_00 + b'_00",
+             src(43, None), r"a_{00} + a'_{00} - b_{00} - b'_{00}", step(derivation_experiment.alpha00),
+             printed=printed.alpha00,
+             check=checks.Proof("(147) at p = q = 0 is the only term in 1/θ0; its factor other than g_0(1)i_{1,0} is "
+                                "a_00 + a'_00 − b_00 − b'_00", truth=EXACT,
+                                holds=lambda e: sp.simplify(e - printed.alpha00()) == 0)),
     )
