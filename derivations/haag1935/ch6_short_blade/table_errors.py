@@ -57,8 +57,10 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(252, "dT"), "ΔT/T = (m'/2m)(λ²/a²)(1/3 − 1/u + 1/u² + 1/(2u³)), u > 5", src("n°81, u > 5", "252"),
              r"\frac{\Delta T}{T}", derivation.inertia_252, deps=(rid(251, "dT"),), printed=printed.inertia_252,
              readings=(printed.READ_M_PRIME,),
-             check=truth.thin(truth.thin_inertia, "I_λ/(2ma²) ((135) at K = 1), I_λ by quadrature, m'/m = 1"),
-             note="(251) with the terms in e^{−u} dropped."),
+             check=truth.thin(truth.thin_inertia, "I_λ/(2ma²) ((135) at K = 1), I_λ by quadrature, m'/m = 1",
+                              power=3),
+             note="(251) with the terms in e^{−u} dropped: the largest, (U − 3U_1)/(2u³) − 1/(2u³) ≈ −4e^{−u}/u³, "
+                  "hence the residual taken times u³ (U_2 − 1 and U_1² are O(e^{−2u}))."),
         Spec(rid(253, "dT"), "ΔT/T of the blade's weight, the short uniform blade", src(81, "253"),
              r"\frac{\Delta T}{T}", derivation.weight_253, deps=(rid(136, "weight"), rid(183, "J"), rid(221, "Q")) + SHORT,
              printed=printed.weight_253, defs=DEFINITIONS, readings=(printed.READ_M_PRIME,),
@@ -67,6 +69,8 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(254, "dT"), "ΔT/T = −(m'/8m)(λ/a)(2 − 6/u + 7/u²), u > 5", src("n°81, u > 5", "254"),
              r"\frac{\Delta T}{T}", derivation.weight_254, deps=(rid(253, "dT"),), printed=printed.weight_254,
              readings=(printed.READ_M_PRIME,),
-             check=truth.thin(truth.thin_weight, "−Jm'/(ma) ((136) at K = 1, Q = a), J by quadrature, m'/m = 1"),
-             note="(253) with the terms in e^{−u} dropped."),
+             check=truth.thin(truth.thin_weight, "−Jm'/(ma) ((136) at K = 1, Q = a), J by quadrature, m'/m = 1",
+                              expected=2),
+             note="(253) with the terms in e^{−u} dropped: they are O(e^{−2u}) (U_2 − 1 ≈ 2e^{−2u}, "
+                  "U_1² ≈ 4e^{−2u}), so the residual falls as e^{−2u}."),
     )

@@ -100,9 +100,10 @@ def mass_order(name: str, inertia: bool) -> checks.Order:
 A_OVER = 10          # a = 10λ
 
 
-def thin(quantity, what: str) -> checks.Order:
-    """The fitted order in q = e^{−u} of (quantity − formula)/(λ/a) on the shot uniform blade u = 5 … 12,
-    a = 10λ, K = 1 (the leading form in λ/a of the Result before, from the blade's integrals)."""
+def thin(quantity, what: str, expected: int = 1, power: int = 0) -> checks.Order:
+    """The fitted order in q = e^{−u} of u^power·(quantity − formula)/(λ/a) on the shot uniform blade
+    u = 5 … 12, a = 10λ, K = 1 (the leading form in λ/a of the Result before, from the blade's integrals).
+    ``power`` takes out a known factor 1/u^power of the dropped terms (q/u³ alone would fit 1 + 3/u)."""
     lam_v = mp.mpf(LENGTH.p) / LENGTH.q
 
     def env_of(q):
@@ -113,13 +114,14 @@ def thin(quantity, what: str) -> checks.Order:
         u_value = -mp.log(q)
         sol = blade.solve(uniform_blade(sp.Float(mp.nstr(u_value, dps + 15), dps + 15)), dps)
         with mp.workdps(dps + 10):
-            return quantity(sol, env_of(q)) * A_OVER
+            return quantity(sol, env_of(q)) * A_OVER * u_value**power
 
     def at(expr, q):
-        return verify.value_at(expr, env_of(q)) * A_OVER
-    return checks.Order(param="exp(-u)", values=THIN, truth=truth, at=at, expected=1, band=0.3,
+        return verify.value_at(expr, env_of(q)) * A_OVER * (-mp.log(q)) ** power
+    scaled = f", times u^{power}" if power else ""
+    return checks.Order(param="exp(-u)", values=THIN, truth=truth, at=at, expected=expected, band=0.3,
                         truth_desc=f"{what}, on the shot uniform blade λ = 0.1 (pendsym.blade), K = 1, a = 10λ, "
-                                   f"u = 5 … 12 (residual over λ/a)",
+                                   f"u = 5 … 12 (residual over λ/a{scaled})",
                         params=(("lambda", "0.1"), ("a/lambda", str(A_OVER))))
 
 
