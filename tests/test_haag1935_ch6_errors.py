@@ -77,3 +77,16 @@ def test_248_approaches_the_exact_133_as_the_blade_shortens():
 def test_i_prime_drops_out_of_248():
     assert not printed.Q1_248().has(i_prime) and not printed.dT_249().has(i_prime)
     assert not printed.sum_246().has(a1)
+
+
+def test_253_against_the_blade_with_mass_at_a_thousand_lengths():
+    """The period change of the blade's weight from pendsym.massive_blade (m'/m = 10⁻⁸, a = 1000λ) against
+    the printed (253): relative difference O(λ/a)."""
+    env = {"lambda": mp.mpf("0.1"), "a": mp.mpf(100), "dps": 20}
+    with mp.workdps(20):
+        value = truth_errors.massive_change("uniform", False)(env)
+    formula = printed.weight_253().subs(dict(DEFS)).subs({u: 2, lam: sp.Rational(1, 10),
+                                                         sp.Symbol("a", positive=True): 100,
+                                                         sp.Symbol("m'", positive=True): sp.Rational(1, 10**8),
+                                                         sp.Symbol("m", positive=True): 1})
+    assert value < 0 and abs(value / mp.mpf(sp.N(formula, 20)) - 1) < mp.mpf("5e-3")

@@ -96,6 +96,37 @@ def mass_order(name: str, inertia: bool) -> checks.Order:
                  name=name, family=FIXED, inputs=mass_inputs)
 
 
+MASS_RATIO = "1e-8"      # m'/m: the O((m'/m)²) part of the exact period change is 10⁻⁸ of it, far below O(λ/a)
+MASSIVE = ("pendsym.massive_blade: T/T0 − 1 of the pendulum (R = 0.08 m) on the uniform blade with mass m' = {ratio}m "
+           "spread uniformly, {what} kept, against the same pendulum on the massless blade (relative residual)")
+
+
+def massive_change(name: str, inertia: bool):
+    """quantity(env): T/T0 − 1 of the pendulum a = env["a"], R = 0.08 m on the blade with mass m' = 10⁻⁸m
+    (uniform density), its inertia (or its weight) alone kept: pendsym.massive_blade."""
+    from pendsym import massive_blade
+    from .truth import R_FIXED, blade_of
+
+    def quantity(env):
+        lam_v = env["lambda"]
+        mb = massive_blade.MassiveBlade(blade_of(name), sp.Float(MASS_RATIO, 30) / sp.Float(lam_v, 30),
+                                        inertia=inertia, weight=not inertia)
+        return massive_blade.relative_period_change(mb, mp.nstr(env["a"], 40), R_FIXED, "9.81", env["dps"])
+    return quantity
+
+
+def massive_order(name: str, inertia: bool) -> checks.Order:
+    """ΔT/T of the blade's inertia (or weight) from the exact model of the blade with mass as a = λ/ε grows:
+    relative residual O(λ/a) (the chapter II formula is not used)."""
+    quantity = massive_change(name, inertia)
+
+    def inputs(env, name, dps):
+        return {"m": 1, "m'": mp.mpf(MASS_RATIO), "dps": dps}
+    what = "the horizontal inertia (no weight)" if inertia else "the weight in the tension (no inertia)"
+    return order(quantity, quantity, 1, MASSIVE.format(ratio=MASS_RATIO, what=what), name=name, family=FIXED,
+                 inputs=inputs)
+
+
 # ---------------------------------------------------------------- u > 5: the terms in e^{−u}
 A_OVER = 10          # a = 10λ
 
