@@ -4,7 +4,9 @@ of the short blade, as a = λ/ε grows (R = 0.08 m fixed: R²/a² is O(ε²)).
 Each truth is chapter II's general result, checked there against the exact models (pendsym.nonlinear_tilt
 for (117), (133)–(134); pendsym.massive_blade for (135), (136)), evaluated here at the exact modes of the
 pendulum on the directly solved blade (K = −n²z'/g, z, z') with the blade's integrals by quadrature on the
-shot blade: the checks judge chapter VI's expansion step in λ/a (and the step u > 5), not chapter II.
+shot blade: those checks judge chapter VI's expansion step in λ/a (and the step u > 5), not chapter II.
+The inertia and the weight (251), (253) are also judged against the exact blade with mass itself
+(:func:`massive_order`).
 """
 from __future__ import annotations
 
