@@ -1,4 +1,4 @@
-"""Haag 1935, chapter VI: the short blade (λ/a small), n°68–79, eqs. (212)–(245).
+"""Haag 1935, chapter VI: the short blade (λ/a small), n°68–81, eqs. (212)–(254).
 
 The section keeps its jobs apart:
 
@@ -15,8 +15,9 @@ The section keeps its jobs apart:
 n°74 and n°78–79 ((233)–(234), (241)–(245)) are in :mod:`.derivation_perturbations`,
 :mod:`.printed_perturbations`, :mod:`.truth_perturbations` and :mod:`.table_blow_isochronism`.
 
-Not built yet: n°80–81, eqs. (246)–(254) (the clamping errors, the inertia and weight of the blade), which
-specialise chapter II's (117), (127), (132)–(136), not yet Results.
+n°80–81 ((246)–(254): the clamping errors, the inertia and weight of the blade, chapter II's (117), (133),
+(135), (136) specialised) are in :mod:`.derivation_errors`, :mod:`.printed_errors`, :mod:`.truth_errors` and
+:mod:`.table_errors`.
 """
 from __future__ import annotations
 
@@ -24,13 +25,14 @@ from types import ModuleType
 
 from pendsym.result import Spec
 
-from . import table_blow_isochronism, table_foci_period, table_vibration_flexion
+from . import table_blow_isochronism, table_errors, table_foci_period, table_vibration_flexion
 
 SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (table_foci_period, "Chapter VI. The short blade: foci, period, Δl, Q, temperature (212)–(223)"),
     (table_vibration_flexion, "Chapter VI. The short blade: parasitic vibration, suppleness, centre of flexion "
                               "(224)–(240)"),
     (table_blow_isochronism, "Chapter VI. The short blade: fatigue after a blow, isochronism (233)–(245)"),
+    (table_errors, "Chapter VI. The short blade: clamping errors, the blade's inertia and weight (246)–(254)"),
 )
 
 
