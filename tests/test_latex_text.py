@@ -90,6 +90,7 @@ def test_the_characters_the_issue_names(char, tex):
     ("100% & $5 #1", r"100\% \& \$5 \#1"),
     ("∫_0^s' φ ds''", r"$\int _{0}^{s'}$ $\varphi$ ds$''$"),      # the prime in the bound, not a 2nd superscript
     ("θ∭ ds", r"$\theta \iiint$ ds"),
+    ("m′/m = 10⁻⁸, x₁₂", r"m$'$/m = 10$^{-8}$, x$_{12}$"),       # one script, not ^{-}^{8}
 ])
 def test_markup_of_the_texts_is_set_as_math(text, tex):
     assert tex_text(text) == tex

@@ -365,6 +365,10 @@ class _Pieces:
             return
         if self.items and self.items[-1][0] == "m":
             prev = self.items[-1][1]
+            script = re.search(r"([\^_])\{([^{}]*)\}$", prev)
+            if script and re.fullmatch(r"[\^_]\{[^{}]*\}", s) and s[0] == script.group(1):
+                self.items[-1][1] = prev[:-1] + s[2:]          # ⁻⁸: one superscript, not two
+                return
             if re.search(r"\\[A-Za-z]+$", prev) and re.match(r"[A-Za-z]", s):
                 prev += " "
             self.items[-1][1] = prev + s
