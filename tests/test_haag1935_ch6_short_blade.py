@@ -38,6 +38,7 @@ def test_truncated_keeps_the_first_order_only():
 
 
 # ---------------------------------------------------------------- printed ≡ derived
+@pytest.mark.slow
 @pytest.mark.parametrize("eq, name", [(212, "rhs"), (212, "reduced"), (214, "z"), (215, "zp"), (216, "K"),
                                       (217, "n2"), (218, "dl"), (224, "Kp"), (225, "np2"), (237, "OFp_l"),
                                       (238, "x")])
@@ -46,6 +47,7 @@ def test_series_forms_equal_the_printed_ones(built, eq, name):
     assert sp.simplify(result.derived - result.spec.printed().subs(L_OF_A)) == 0
 
 
+@pytest.mark.slow
 def test_length_correction_of_ordinary_pendulums(built):
     """(219) is λ − v_0 − w_0, and (220) equals λ(1 − coth u/u)."""
     assert sp.expand(built[rid(219, "dl")].derived - (lam - v0 - w0)) == 0
@@ -53,6 +55,7 @@ def test_length_correction_of_ordinary_pendulums(built):
     assert sp.simplify(difference.rewrite(sp.exp)) == 0
 
 
+@pytest.mark.slow
 def test_zero_of_the_length_correction_is_rounded_in_the_text(built):
     """u th u = 1 at 1.19968 (mpmath, independent of the derivation): "1,2 environ" is it to one decimal."""
     root = mp.findroot(lambda x: x * mp.tanh(x) - 1, 1.2)
@@ -61,6 +64,7 @@ def test_zero_of_the_length_correction_is_rounded_in_the_text(built):
     assert round(float(derived), 1) == 1.2 and derived != printed.u_root_220()
 
 
+@pytest.mark.slow
 def test_value_at_u_4_is_truncated_in_the_text(built):
     """sh²4/(4 + sh 4 ch 4) = 0.99399…: the printed 0,993 is truncated (rounded would be 0,994)."""
     value = float(built[rid(236, "value")].derived)
@@ -69,11 +73,13 @@ def test_value_at_u_4_is_truncated_in_the_text(built):
     assert int(value * 1000) / 1000 == 0.993 and round(value, 3) == 0.994
 
 
+@pytest.mark.slow
 def test_thin_blade_limits(built):
     assert sp.simplify(built[rid(240, "c_thin")].derived - lam / (2 * u)) == 0
     assert sp.simplify(built[rid(237, "OFp_thin")].derived - lam / u) == 0
 
 
+@pytest.mark.slow
 def test_uniform_forms_match_under_the_definitions(built):
     for eq, name in ((239, "F2"), (240, "x"), (240, "c"), (235, "S_uniform")):
         result = built[rid(eq, name)]
@@ -114,6 +120,7 @@ def test_length_correction_fails_with_a_sign_error(built):
 
 
 # ---------------------------------------------------------------- n°70–71: temperature, launches
+@pytest.mark.slow
 def test_temperature_formula_is_twice_the_derived_one(built):
     """(222) as printed is 2 × the first-order (60): its leading term α' where T ∝ √(l/g) gives α'/2."""
     from derivations.haag1935.symbols import alpha_rod
@@ -122,6 +129,7 @@ def test_temperature_formula_is_twice_the_derived_one(built):
     assert sp.limit(result.derived, a, sp.oo) == alpha_rod / 2
 
 
+@pytest.mark.slow
 def test_uniform_temperature_differs_in_the_beta_term_only(built):
     """(223): printed − derived = (λβ/4a)(U_1² − U_1): only the thermo-elastic term differs."""
     from derivations.haag1935.symbols import U1, alpha_blade, alpha_rod, beta_t
@@ -134,6 +142,7 @@ def test_uniform_temperature_differs_in_the_beta_term_only(built):
     assert abs(sp.N(difference.subs(at), 30)) > 1e-8
 
 
+@pytest.mark.slow
 def test_launch_ratios_keep_the_focal_factor(built):
     from derivations.haag1935.ch6_short_blade import derivation
     for eq in (227, 228):
@@ -150,6 +159,7 @@ def test_printed_temperature_fails_its_order_check(built):
     assert evidence.passed and evidence.printed_agrees is False and abs(evidence.printed_order) < 0.3
 
 
+@pytest.mark.slow
 def test_fatigue_at_the_clamp_is_U2(built):
     """(232): (178) at s = 0, K = 1 is √(3ET)(U + U_1)θ0 = √(3ET)U_2θ0 (161), T = Ee²u²/(12λ²)."""
     from derivations.haag1935.symbols import E, e
@@ -160,6 +170,7 @@ def test_fatigue_at_the_clamp_is_U2(built):
     assert abs(sp.N((derived - expected).subs(at), 30)) < 1e-28
 
 
+@pytest.mark.slow
 def test_thread_limit_of_the_length_correction(built):
     assert built[rid(220, "thread")].derived == lam
 
@@ -186,6 +197,7 @@ def test_every_claim_has_an_independent_check():
         assert spec.definition == isinstance(spec.check, checks.Definition), spec.id
 
 
+@pytest.mark.slow
 def test_fatigue_by_point_of_attack_meets_232_at_the_focus(built):
     """(230) and (231) both give √(3ET)U_2θ0 (232) when B is at F ≈ G (b = a); they differ elsewhere."""
     from derivations.haag1935.ch3_uniform.launch_symbols import stress_scale

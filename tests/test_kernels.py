@@ -64,6 +64,7 @@ def _fn(lib, name, n):
     return f
 
 
+@pytest.mark.slow
 def test_every_c_kernel_within_bound(kernel_table, clib):
     worst = {}
     for memoir, name, r, args in kernel_table:
@@ -73,12 +74,14 @@ def test_every_c_kernel_within_bound(kernel_table, clib):
     assert not bad, bad
 
 
+@pytest.mark.slow
 def test_every_python_kernel_within_bound(kernel_table, pymod):
     for memoir, name, r, args in kernel_table:
         acc = kn.measure(getattr(pymod[memoir], name), r.derived, args, kn.kernel_sample(r.derived, args, name))
         assert acc.max_scaled <= BOUND, (name, acc)
 
 
+@pytest.mark.slow
 def test_sampling_includes_the_ends_of_the_domain(kernel_table):
     for _, name, r, args in kernel_table:
         pts = kn.kernel_sample(r.derived, args, name)
@@ -176,6 +179,7 @@ REGRESSIONS.update({
 # 4.51 at t = 6.6 but not at subnormal t, E_s 2.56–2.73).
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["eq169_F2", "eq183_J", "eq170_F", "n21_Ec", "n23_dtheta", "n26_Es", "n22_Es",
                                   "n23_Es"])
 def test_the_kernels_issue_11_found_over_the_bound_hold_it_there(kernel_table, clib, pymod, name):

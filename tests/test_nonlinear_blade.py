@@ -1,6 +1,7 @@
 """The exact (large-deflection) blade carrying a rigid pendulum: its elastica, its two limits, convergence."""
 import mpmath as mp
 import sympy as sp
+import pytest
 
 from pendsym import blade as linear_blade
 from pendsym import nonlinear_blade
@@ -49,6 +50,7 @@ def test_elastica_jacobian_against_finite_differences():
                 assert abs(fd - end.jacobian[r][p]) < mp.mpf("1e-18") * (1 + abs(fd))
 
 
+@pytest.mark.slow
 def test_amplitude_to_zero_gives_the_linear_period():
     """T(θ0) → 2π/n of the linear eigenproblem, with T/T_lin − 1 of order θ0² (fitted slope 2)."""
     T_lin = nonlinear_blade.linear_period(UNIFORM, *CLOCK)
@@ -59,6 +61,7 @@ def test_amplitude_to_zero_gives_the_linear_period():
     assert 0 < rel[1] < 1e-5
 
 
+@pytest.mark.slow
 def test_collocation_converges_in_nodes_and_precision():
     """The period at θ0 = 0.01 with 5 nodes at 30 digits, 7 nodes at 40 digits: 30 digits agree."""
     T5 = nonlinear_blade.orbit(UNIFORM, *CLOCK, "0.01", 5, 30)
@@ -67,6 +70,7 @@ def test_collocation_converges_in_nodes_and_precision():
     assert abs(T5.period - T7.period) < mp.mpf("1e-30") * T7.period
 
 
+@pytest.mark.slow
 def test_short_flexible_blade_is_a_rigid_compound_pendulum():
     """λ → 0 with u = λ/√M fixed: the period tends to the exact period 4K(sin²(θ0/2))·√(L/g) of the rigid
     pendulum pivoting at the clamp, L = (d² + R²)/d with d = λ + a (mpmath's ellipk, an AGM); the
