@@ -1,7 +1,7 @@
 """The exact (large-deflection) blade carrying a rigid pendulum: its elastica, its two limits, convergence."""
 import mpmath as mp
-import sympy as sp
 import pytest
+import sympy as sp
 
 from pendsym import blade as linear_blade
 from pendsym import nonlinear_blade
