@@ -8,6 +8,7 @@ from pendsym.memoir import Memoir, Section, headings_by
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
 from . import ch2_clamping, ch2_dissymmetry, ch2_perturbations
 from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
+from . import ch7_clamping, ch7_dissymmetry, ch7_isochronism, ch7_mass
 from .ch7_gravity import figures as ch7_figures
 from .ch8_inverted import figures as ch8_figures
 from .ch9_holes import figures as ch9_figures
@@ -16,6 +17,11 @@ from .ch9_holes import figures as ch9_figures
 def _of(package) -> tuple[Section, ...]:
     """The sections of a chapter package (its ``sections()``: (module, title) pairs)."""
     return tuple(Section.of(module, title) for module, title in package.sections())
+
+
+def _inverted(package) -> tuple[Section, ...]:
+    """The chapter VIII sections of a chapter VII package (its ``inverted_sections()``)."""
+    return tuple(Section.of(module, title) for module, title in package.inverted_sections())
 
 
 CHAPTER_1 = (
@@ -39,8 +45,10 @@ CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
 CHAPTER_5 = (Section.of(ch5_point, "Chapter V. Point pendulum, point mass, equal periods, beats (198)–(211)"),)
 CHAPTER_6 = _of(ch6_short_blade)
-CHAPTER_7 = (Section.of(ch7_gravity, "Chapter VII. The gravity pendulum with direct suspension (255)–(285)"),)
-CHAPTER_8 = (Section.of(ch8_inverted, "Chapter VIII. The inverted blade (302)–(317)"),)
+CHAPTER_7 = ((Section.of(ch7_gravity, "Chapter VII. The gravity pendulum with direct suspension (255)–(285)"),)
+             + _of(ch7_isochronism) + _of(ch7_clamping) + _of(ch7_mass) + _of(ch7_dissymmetry))
+CHAPTER_8 = ((Section.of(ch8_inverted, "Chapter VIII. The inverted blade (302)–(317)"),)
+             + _inverted(ch7_clamping) + _inverted(ch7_mass))
 CHAPTER_9 = _of(ch9_holes)
 SECTIONS = CHAPTER_1 + CHAPTER_2 + CHAPTER_3 + CHAPTER_4 + CHAPTER_5 + CHAPTER_6 + CHAPTER_7 + CHAPTER_8 + CHAPTER_9
 
@@ -76,8 +84,9 @@ HEADINGS = (
      _eqs(224, 240, CHAPTER_6)),
     ("Chapter VI. The short blade: perturbations, isochronism, clamping errors, inertia and weight (241)–(254)",
      _eqs(241, 254, CHAPTER_6)),
-    ("Chapter VII. The gravity pendulum with direct suspension (255)–(285), n°82–93", _eqs(0, 999, CHAPTER_7)),
-    ("Chapter VIII. The inverted blade (302)–(317), n°100–103", _eqs(0, 999, CHAPTER_8)),
+    ("Chapter VII. The gravity pendulum with direct suspension (255)–(280), n°82–91", _eqs(0, 280, CHAPTER_7)),
+    ("Chapter VII. The gravity pendulum's perturbations (281)–(301), n°92–99", _eqs(281, 999, CHAPTER_7)),
+    ("Chapter VIII. The inverted blade (302)–(320), n°100–103", _eqs(0, 999, CHAPTER_8)),
     ("Chapter IX. The rectangular hole (321)–(333)", _eqs(321, 333, CHAPTER_9)),
     ("Chapter IX. The rhombus hole (334)–(346)", _eqs(334, 346, CHAPTER_9)),
 )
@@ -89,7 +98,7 @@ MEMOIR = Memoir(
            "clamping errors, the blade's inertia and weight, internal friction, the dissymmetric blade, "
            "eqs. (88)–(155); chapter III, the uniform blade, eqs. (156)–(183); chapters IV–V, "
            "the thread, the point pendulum and beats, eqs. (184)–(211); chapter VI, the short blade, "
-           "eqs. (212)–(240); chapters VII–VIII, the gravity pendulum direct and inverted, eqs. (255)–(317); "
+           "eqs. (212)–(254); chapters VII–VIII, the gravity pendulum direct and inverted, eqs. (255)–(320); "
            "chapter IX, blades with a hole, eqs. (321)–(346)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), HEADINGS),

@@ -1,0 +1,19 @@
+"""Haag 1935, chapter VII, n°94–95, eqs. (286)–(290), and chapter VIII, n°103, eq. (318): the gravity pendulum's
+clamping errors, direct and inverted.
+
+:mod:`.table` (chapter VII's Results), :mod:`.table_inverted` (chapter VIII's).
+"""
+from . import table, table_inverted
+
+
+def sections():
+    """(module, title) of the chapter VII Result tables."""
+    return ((table, "Chapter VII. Clamping errors of the gravity pendulum (286)–(290), n°94–95"),)
+
+
+def inverted_sections():
+    """(module, title) of the chapter VIII Result tables."""
+    return ((table_inverted, "Chapter VIII. Clamping errors of the inverted blade (318), n°103"),)
+
+
+__all__ = ["inverted_sections", "sections"]
