@@ -1,9 +1,13 @@
 """Haag 1935 in scenes: the uniform blade's effect on the period (chapter III, n°50: n² = Kgz/R²
-with K of (36) and z of (30)), against a knife edge at the blade's lower clamp.
+with K of (36) and z of (30)), against a knife edge at the blade's lower clamp; and, for a short
+blade (λ/a ≤ 0.1, chapter VI), its isochronism error (244) and its inertia (251) and weight (253).
 
-ΔT/T = k/n − 1 with k² = ga/(a² + R²) the rigid pendulum pivoting at the clamp.  The theory
-is linear in the blade (small oscillations): what it leaves out (the blade's mass, the
-finite-amplitude terms of chapter II) is not in the engine yet and is listed by the budget.
+ΔT/T = k/n − 1 with k² = ga/(a² + R²) the rigid pendulum pivoting at the clamp.  The short blade's
+Results neglect λ² and R² before a² (n°78–81); their errors are estimated as that next order.  The
+isochronism error (244) contains the circular error θ0²/16 of the rigid pendulum, which Charbonnier's
+effect already counts: the blade's part is (244) − θ0²/16.  What the engine does not give for a blade
+is listed by :func:`pending`: the clamping errors (their angles are not in the scene), and the
+finite-amplitude terms and the blade's mass for a blade that is not short.
 """
 from __future__ import annotations
 
@@ -11,9 +15,37 @@ import math
 
 from pendsym.scenes.effects import Effect, Instrument, Pending
 
+SHORT = 0.1          # λ/a at most: chapter VI's short blade
+
 
 def _blade(inst: Instrument) -> dict[str, float]:
     return {"a": inst.a, "R": inst.R, "lambda": inst.blade_length, "u": inst.blade_u, "g": inst.g}
+
+
+def _short(inst: Instrument) -> bool:
+    return inst.kind == "blade" and inst.blade_short <= SHORT
+
+
+def _massive(inst: Instrument) -> bool:
+    return _short(inst) and inst.blade_mass is not None
+
+
+def _short_symbols(inst: Instrument) -> dict[str, float]:
+    """The symbols of (244), (251), (253): θ0, λ, a, u, m, m'."""
+    return {"theta_0": inst.alpha, "lambda": inst.blade_length, "a": inst.a, "u": inst.blade_u, "m": inst.m,
+            "m'": inst.blade_mass if inst.blade_mass is not None else math.nan}
+
+
+def _isochronism_estimate(inst: Instrument) -> float:
+    """(θ0²/16)(λ/a)(7/(4u) + 1/u²): (245)'s 7λ/(4au) for u > 4, bounded by 1/u² as u → 0 (where the
+    bracket of (244) grows like 1/u², i.e. like M/λ²)."""
+    u = inst.blade_u
+    return inst.alpha**2 / 16 * inst.blade_short * (7 / (4 * u) + 1 / u**2)
+
+
+def _next_order(rel: float, inst: Instrument, *extra: float) -> float:
+    """|ΔT/T| × (λ/a + R²/a² + extra): the terms the short blade's Results neglect (n°78–81)."""
+    return abs(rel) * (inst.blade_short + (inst.R / inst.a) ** 2 + sum(extra))
 
 
 def effects() -> tuple[Effect, ...]:
@@ -25,13 +57,41 @@ def effects() -> tuple[Effect, ...]:
                symbols=_blade, relative=lambda n2, i: i.k / math.sqrt(n2) - 1,
                error=lambda rel, i: 1e-14 * abs(rel), order=5,
                model="linear theory of the blade, exact for small oscillations (evaluated at 30 digits)"),
+        Effect("blade_isochronism", "short blade at finite amplitude (its part of the isochronism error)",
+               "Haag 1935, ch. VI n°79, eq. (244) less θ0²/16", "haag1935.eq244.dT",
+               applies=lambda i: _short(i) and i.alpha > 0, estimate=_isochronism_estimate,
+               symbols=_short_symbols, relative=lambda value, i: value - i.alpha**2 / 16,
+               # first order in λ/a (its bracket, 16|rel|/θ0², is the true small parameter when u is
+               # small), R² neglected before a², and the next order in θ0²
+               error=lambda rel, i: _next_order(rel, i, 16 * abs(rel) / i.alpha**2, i.alpha**2),
+               model="short uniform blade, first order in λ/a and in θ0²", order=15,
+               # (244) is (Q'/Q)θ0²/16 (111) relative to the blade's linear period: the circular error of the
+               # pendulum on the blade; its product with the circular error is in its error (the θ0² term)
+               couples=("blade", "circular")),
+        Effect("blade_inertia", "inertia of the short blade (its mass m')",
+               "Haag 1935, ch. VI n°81, eq. (251)", "haag1935.eq251.dT", applies=_massive,
+               estimate=lambda i: i.blade_mass / i.m * i.blade_short**2 / 6,     # (252)'s bracket ≤ 1/3
+               symbols=_short_symbols, relative=lambda value, i: value,
+               error=lambda rel, i: _next_order(rel, i, i.blade_mass / i.m),
+               model="short uniform blade, first order in m'/m, leading order in λ/a", order=16,
+               couples=("blade",)),        # relative to the blade's linear period
+        Effect("blade_weight", "weight of the short blade (its mass m')",
+               "Haag 1935, ch. VI n°81, eq. (253)", "haag1935.eq253.dT", applies=_massive,
+               estimate=lambda i: i.blade_mass / i.m * i.blade_short / 4,         # (254)'s bracket → 2
+               symbols=_short_symbols, relative=lambda value, i: value,
+               error=lambda rel, i: _next_order(rel, i, i.blade_mass / i.m),
+               model="short uniform blade, first order in m'/m, leading order in λ/a", order=17,
+               couples=("blade",)),
     )
 
 
 def pending() -> tuple[Pending, ...]:
-    """What Haag treats for a blade that the engine has not built yet (other chapters)."""
+    """What Haag treats for a blade that scenes cannot use yet."""
     is_blade = lambda i: i.kind == "blade"
-    return (Pending("blade_isochronism", "blade at finite amplitude (isochronism error)", "Haag 1935, ch. II, VII",
-                    is_blade),
-            Pending("blade_clamping", "clamping errors of the blade", "Haag 1935, ch. II, VII", is_blade),
-            Pending("blade_inertia", "inertia and weight of the blade", "Haag 1935, ch. II", is_blade))
+    long_blade = lambda i: is_blade(i) and i.blade_short > SHORT
+    return (Pending("blade_isochronism_long", "blade at finite amplitude, λ/a > 0.1 (isochronism error)",
+                    "Haag 1935, ch. II (111)–(112)", lambda i: long_blade(i) and i.alpha > 0),
+            Pending("blade_clamping", "clamping errors of the blade (their angles are not in the scene)",
+                    "Haag 1935, ch. II n°31–35, ch. VI n°80", is_blade),
+            Pending("blade_mass", "inertia and weight of the blade (give suspension.density; λ/a ≤ 0.1)",
+                    "Haag 1935, ch. II n°36–37, ch. VI n°81", lambda i: is_blade(i) and not _massive(i)))

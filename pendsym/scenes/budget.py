@@ -79,6 +79,8 @@ def instrument(sc: schema.Scene) -> Instrument:
         a = bob.a
     if isinstance(sus, schema.Blade):
         extra = {"blade_length": sus.length, "blade_EI": sus.E * sus.width * sus.thickness**3 / 12}
+        if sus.density is not None:
+            extra["blade_mass"] = sus.density * sus.width * sus.thickness * sus.length
     if sc.support is not None:
         extra.update(support_K=sc.support.compliance, support_M=sc.support.mass)
     if sc.drift is not None:
@@ -125,6 +127,13 @@ def _within_theories(inst: Instrument) -> None:
 # scene's integration (tests/test_scene_instruments.py) shows a coupling of circular error and
 # length drift of −2.1 × the product, so 1 would be too small.
 COUPLING = 4.0
+
+
+def _unaccounted_pairs(kept: list[Effect], rels: dict[str, float]) -> list[tuple[str, str]]:
+    """The pairs of kept effects whose coupling no kept Result gives (see ``Effect.couples``)."""
+    given = {frozenset((x, y)) for e in kept for x in (e.key, *e.couples) for y in (e.key, *e.couples) if x != y}
+    names = list(rels)
+    return [(x, y) for n, x in enumerate(names) for y in names[n + 1:] if frozenset((x, y)) not in given]
 
 
 def build(ids: list[str]) -> dict[str, Result]:
@@ -221,8 +230,7 @@ def solve(sc: schema.Scene) -> Budget:
             rows.append(Row(p.key, p.title, p.source, "", math.nan, None, math.nan, "not available",
                             "not in the engine yet: not counted in the error"))
     factor = math.prod(1 + r for r in rels.values())
-    vals = list(rels.values())
-    interaction = COUPLING * sum(abs(vals[i] * vals[j]) for i in range(len(vals)) for j in range(i + 1, len(vals)))
+    interaction = COUPLING * sum(abs(rels[x] * rels[y]) for x, y in _unaccounted_pairs(kept, rels))
     error = sum(r.error for r in rows if r.status != "not available") + interaction
     return Budget(sc, inst, inst.T0 * factor, error, tuple(rows), interaction, len(built), total)
 

@@ -42,6 +42,7 @@ class Instrument:
     thread_EA: float | None = None         # e
     blade_length: float | None = None
     blade_EI: float | None = None
+    blade_mass: float | None = None        # m' = density × width × thickness × length, when the density is given
     support_K: float | None = None
     support_M: float = 0.0
     drift_rate: float | None = None        # dl/dt, m/s
@@ -63,6 +64,11 @@ class Instrument:
         return self.blade_EI / (self.m * self.g)
 
     @property
+    def blade_short(self) -> float:
+        """λ/a, the small parameter of the short blade (Haag ch. VI)."""
+        return self.blade_length / self.a
+
+    @property
     def blade_u(self) -> float:
         """u = λ/√M."""
         return self.blade_length / self.blade_M ** 0.5
@@ -80,6 +86,9 @@ class Effect:
     what the model leaves out), ≥ 0.
     ``exact``: optional (inst) → ΔT/T by a more complete model the engine has, and its
     error; chosen when the first-order value is not within the tolerance.
+    ``couples``: keys of effects whose coupling with this one (and with each other) this effect's
+    Result gives: e.g. a blade's isochronism error is the circular error of the pendulum on the
+    blade, relative to the blade's linear period, so the products of the three need no bound.
     """
 
     key: str
@@ -93,6 +102,7 @@ class Effect:
     error: Callable[[float, Instrument], float]
     exact: Callable[[Instrument], tuple[float, float, str]] | None = None
     scale_by: str | None = None          # the key of an effect whose ΔT/T multiplies this one's
+    couples: tuple[str, ...] = ()
     model: str = "first order"           # what the Result is, for the budget's "model" line
     order: int = 50                      # the budget's row order
 

@@ -51,6 +51,8 @@ class Blade(Strict):
     length: float = num(1e-3, 10.0, "m", "free length λ of the blade between its clamps")
     mounting: Literal["direct", "inverted"] = Field("direct", description="direct (the bob hangs below the "
                                                     "blade) or inverted (the bob stands on it)")
+    density: float | None = num(100.0, 3e4, "kg/m^3", "density of the blade's material (for its inertia and "
+                                "weight; without it they are not estimated)", default=None)
 
 
 Suspension = Annotated[Union[Knife, Thread, Blade], Field(discriminator="kind")]
