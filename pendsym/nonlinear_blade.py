@@ -294,17 +294,38 @@ def nodes_for(theta0, dps: int) -> int:
         return max(4, int(mp.ceil(dps / per_node)))
 
 
-def period(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None) -> mp.mpf:
-    """The period of the principal oscillation of amplitude θ0 on the exact blade, to ``dps`` digits.
+@dataclass(frozen=True)
+class Track:
+    """What a cached orbit keeps: the period and the end's positions at the collocation nodes."""
+
+    period: mp.mpf
+    theta: tuple
+    alpha: tuple
+    beta: tuple
+
+
+def track(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None) -> Track:
+    """The principal oscillation of amplitude θ0 on the exact blade, to ``dps`` digits: its period and the
+    end A's (θ, α, β) at the nodes.
 
     Cached by its inputs (the blade's λ and M, a, R, g, θ0, dps, nodes) in :mod:`pendsym.cache`.
     """
     nodes = nodes_for(theta0, dps) if nodes is None else nodes
-    key = keys.digest(("nonlinear_blade.period", VERSION, keys.FORMAT, *keys.versions(),
+    key = keys.digest(("nonlinear_blade.track", VERSION, keys.FORMAT, *keys.versions(),
                        keys.file_hash(keys.module_file(__name__)),
                        sp.srepr(blade.length), sp.srepr(blade.M), str(a), str(R), str(g), str(theta0),
                        str(dps), str(nodes)))
-    return cache.memo(key, lambda: orbit(blade, a, R, g, theta0, nodes, dps).period)
+
+    def compute():
+        o = orbit(blade, a, R, g, theta0, nodes, dps)
+        return (o.period, o.theta, o.alpha, o.beta)
+    return Track(*cache.memo(key, compute))
+
+
+def period(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None) -> mp.mpf:
+    """The period of the principal oscillation of amplitude θ0 on the exact blade, to ``dps`` digits
+    (:func:`track`, cached)."""
+    return track(blade, a, R, g, theta0, dps, nodes).period
 
 
 def linear_period(blade: linear_blade.Blade, a, R, g, dps: int = 30) -> mp.mpf:

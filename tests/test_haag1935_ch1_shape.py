@@ -20,8 +20,9 @@ def built():
     return stages.results(IDS)
 
 
-def test_ids_cover_77_to_87():
-    assert len(IDS) == 16 and {int(i.split(".")[1][2:]) for i in IDS} == set(range(77, 88))
+def test_ids_cover_77_to_87_and_the_orders_of_64_and_85():
+    assert len(IDS) == 18 and {int(i.split(".")[1][2:]) for i in IDS} == set(range(77, 88)) | {64}
+    assert set(ch1_shape.ORBIT_RESULTS) <= set(IDS)
 
 
 @pytest.mark.slow
@@ -30,7 +31,8 @@ def test_all_results_match():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("eq, name", [(77, "y"), (81, "F2G2"), (84, "geometry"), (86, "A"), (87, "optimum")])
+@pytest.mark.parametrize("eq, name", [(77, "y"), (81, "F2G2"), (84, "geometry"), (86, "A"), (87, "optimum"),
+                                      (64, "third_order"), (85, "fourth_order")])
 def test_checks_pass(eq, name):
     ev = stages.assessed(built()[rid(eq, name)])[1]
     assert ev.passed, ev
@@ -42,6 +44,10 @@ def test_checks_pass(eq, name):
     (80, "W", lambda d: d * (1 + sp.Rational(1, 10**20))),
     (86, "A", lambda d: d * sp.Rational(1001, 1000)),           # a wrong A leaves a residual of the second order
     (87, "optimum", lambda d: d.subs(x_fork, x_fork + sp.Rational(1, 100))),   # another axis: glide of order 2
+    # on the exact orbit: a θ² coefficient 0.1 % off leaves a residual of order 2, a slope 0.1 % off of order 1
+    (85, "fourth_order", lambda d: d.subs(sp.Symbol("lambda", positive=True), 0) * sp.Rational(1001, 1000)
+     + sp.Symbol("lambda", positive=True)),
+    (64, "third_order", lambda d: d * sp.Rational(1001, 1000)),
 ])
 def test_a_wrong_formula_fails(eq, name, wrong):
     r = built()[rid(eq, name)]

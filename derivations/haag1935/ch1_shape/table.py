@@ -3,11 +3,14 @@ from __future__ import annotations
 
 from pendsym.result import Spec
 from ..common import READ_VW, rid, src
+from ..ch1_launch import printed as launch_printed
 from . import derivation, printed, truth
 from .printed import READ_81, READ_85, READ_86
 
 F_AND_G = (rid(79, "F"), rid(79, "G"))
 FORK_STEPS = (rid(84, "geometry"), rid(64, "beta"), rid(85, "alpha"))
+# checked on chapter II's nonlinear orbits (run in the worker of (111)–(112))
+ORBIT_RESULTS = (rid(64, "third_order"), rid(85, "fourth_order"))
 
 
 def specs() -> tuple[Spec, ...]:
@@ -45,6 +48,15 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(85, "alpha"), "α = λ − (F2/2)θ² in the principal oscillation", src(25, "85"), r"\alpha",
              derivation.alpha_85, deps=(rid(66, "phi"),) + F_AND_G, printed=printed.eq85, readings=(READ_85,),
              check=truth.alpha_second_order()),
+        Spec(rid(64, "third_order"), "(64) β = −(a + z')θ is exact to the third order in θ (β odd in θ)",
+             src(25, None), r"\beta", lambda deps: deps[rid(64, "beta")].derived, deps=(rid(64, "beta"),),
+             printed=launch_printed.eq64, check=truth.end_order("beta"),
+             note="The claim after (85), with its footnote (2). The residual of the end's exact β falls like θ³."),
+        Spec(rid(85, "fourth_order"), "(85) α = λ − (F2/2)θ² is exact to the fourth order in θ (α even in θ)",
+             src(25, None), r"\alpha", lambda deps: deps[rid(85, "alpha")].derived, deps=(rid(85, "alpha"),),
+             printed=printed.eq85, readings=(READ_85,), check=truth.end_order("alpha"),
+             note="The claim after (85), with its footnote (2): the θ³ term vanishes, so the residual of the end's "
+                  "exact α falls like θ⁴."),
         Spec(rid(86, "A"), "A of the fork: (84) with (64), (85) to the order θ²", src(25, "86"), "A",
              derivation.A_fork_86, deps=FORK_STEPS, printed=printed.eq86_A, readings=(READ_86,), check=truth.A_fork(),
              note="A is defined through r² + 2r(λ − c) + (λ − c)² − L² = Aθ² (to the fourth order)."),
