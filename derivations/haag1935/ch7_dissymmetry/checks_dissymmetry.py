@@ -28,7 +28,8 @@ def _env(eps, ratio: str = truth.RATIO) -> dict:
     """ε_E, θ0 (θ0² = ε_E/ratio), G, C as mpf."""
     e = mp.mpf(eps)
     return {"varepsilon_E": e, "theta_0": mp.sqrt(e / mp.mpf(ratio)), "G": mp.mpf(truth.G_VALUE),
-            "C": mp.mpf(truth.C_VALUE), G1: e, "G_2": mp.mpf(1)}
+            "C": mp.mpf(truth.C_VALUE), G1: e, "G_2": mp.mpf(1),
+            eps_E_fn(s): 0}                    # ε(s) only inside g1 = ε_E G2 (G2 = 1)
 
 
 def _eps_str(eps) -> str:

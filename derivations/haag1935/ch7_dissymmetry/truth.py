@@ -11,8 +11,10 @@ of the rod from the vertical:
   tilted equilibrium it gives (286), −GCj²/4, by itself (the ratio 4 is that of a cubic restoring law);
 - the constant couple F of the clamping errors puts the equilibrium of the symmetric blade (ε_E = 0) at θ = j.
 
-It is conservative, so one period is T = 2∫dθ/√(2(E − V)) between the turning points, E = V(j + θ0) (the swing
-starts from θ = j + θ0 at rest).  The turning point below is a root of the branch's quartic (mpmath's polyroots);
+It is conservative, so one period is T = 2∫dθ/√(2(E − V)) between the turning points θ_min, θ_max, E = V(θ_max),
+for the swing of half-width θ0 = (θ_max − θ_min)/2 (Haag's amplitude of θ1 = θ − j; starting instead from
+θ = j + θ0 would make the symmetric pendulum's T uneven in j by a second-order amount, GCθ0²·θ0, which moves the
+maximum of T when α is that small).  The turning point below is a root of the branch's quartic (mpmath's polyroots);
 E − V(θ) is written (θ_t − θ)·S(θ_t, θ) without cancellation and θ = θ_t ∓ u² removes the inverse square roots,
 so that each piece (split at θ = 0 where the stiffness jumps) is a smooth quadrature (mpmath's quad) at 30 digits
 (45 to confirm).  ΔT/T = T/(2π) − 1.
@@ -46,25 +48,41 @@ def _S(A, F, B, x, y):
     return A * (x + y) / 2 - F + B * (x + y) * (x * x + y * y) / 4
 
 
+def _bottom(top, F, B, right, dps: int):
+    """The energy E = V(top), the stiffness of the lower branch and the lower turning point of the swing that
+    starts at rest from θ = top > 0: the largest root below the well of the branch's quartic (polyroots)."""
+    E = right * top**2 / 2 - F * top + B * top**4 / 4
+    crosses = E > 0                       # V(0) = 0: the swing reaches θ < 0
+    A_low = mp.mpf(1) if crosses else right
+    roots = mp.polyroots([B / 4, 0, A_low / 2, -F, -E], maxsteps=200, extraprec=2 * dps)
+    real = [mp.re(r) for r in roots if abs(mp.im(r)) < mp.mpf(10) ** (-dps)]
+    below = [r for r in real if (r < 0 if crosses else 0 <= r < top - mp.mpf(10) ** (-dps // 2))]
+    return E, crosses, A_low, max(below)
+
+
+def _swing(G: str, C: str, eps: str, theta0: str, j: str, dps: int) -> dict:
+    """The swing of half-width θ0 ((θ_max − θ_min)/2 = θ0, the amplitude of θ1 = θ − j, so that the symmetric
+    pendulum's T is even in j): θ_max by findroot from j + θ0, and what the quadrature needs (at dps + 10)."""
+    Gv, Cv, e, t0, jv = (_mpf(x) for x in (G, C, eps, theta0, j))
+    B = Gv * Cv / 6
+    F = jv + B * jv**3
+    right = 1 + e * Gv
+    if jv + t0 <= 0:
+        raise ValueError("the swing must reach the side θ > 0")
+    top = mp.findroot(lambda x: x - _bottom(x, F, B, right, dps)[3] - 2 * t0, (jv + t0, jv + t0 * mp.mpf("1.1")),
+                      solver="secant", tol=mp.mpf(10) ** (-2 * dps))
+    E, crosses, A_low, bottom = _bottom(top, F, B, right, dps)
+    return {"top": top, "bottom": bottom, "crosses": crosses, "A_low": A_low, "F": F, "B": B, "right": right}
+
+
 @functools.lru_cache(maxsize=512)
 def period_change(G: str, C: str, eps: str, theta0: str, j: str, dps: int) -> mp.mpf:
-    """ΔT/T = T/(2π) − 1 of the model above from θ = j + θ0 at rest (n = 1); arguments as strings (cache keys)."""
+    """ΔT/T = T/(2π) − 1 of the model above (n = 1) for the swing of half-width θ0 (:func:`_swing`), arguments as
+    strings (cache keys)."""
     with mp.workdps(dps + 10):
-        Gv, Cv, e, t0, jv = (_mpf(x) for x in (G, C, eps, theta0, j))
-        B = Gv * Cv / 6
-        F = jv + B * jv**3
-        right, left = 1 + e * Gv, mp.mpf(1)
-        top = jv + t0
-        if top <= 0:
-            raise ValueError("the swing must start on the side θ > 0")
-        E = right * top**2 / 2 - F * top + B * top**4 / 4
-        crosses = E > 0                       # V(0) = 0: the swing reaches θ < 0
-        A_low = left if crosses else right
-        roots = mp.polyroots([B / 4, 0, A_low / 2, -F, -E], maxsteps=200, extraprec=2 * dps)
-        real = [mp.re(r) for r in roots if abs(mp.im(r)) < mp.mpf(10) ** (-dps)]
-        below = [r for r in real if (r < 0 if crosses else 0 <= r < top - mp.mpf(10) ** (-dps // 2))]
-        bottom = max(below)
-        split = mp.mpf(0) if crosses else (top + bottom) / 2
+        sw = _swing(G, C, eps, theta0, j, dps)
+        top, bottom, A_low, F, B, right = (sw[k] for k in ("top", "bottom", "A_low", "F", "B", "right"))
+        split = mp.mpf(0) if sw["crosses"] else (top + bottom) / 2
 
         def upper(u):
             return 2 / mp.sqrt(2 * _S(right, F, B, top, top - u * u))
@@ -73,6 +91,28 @@ def period_change(G: str, C: str, eps: str, theta0: str, j: str, dps: int) -> mp
             return 2 / mp.sqrt(-2 * _S(A_low, F, B, bottom, bottom + u * u))
         half = mp.quad(upper, [0, mp.sqrt(top - split)]) + mp.quad(lower, [0, mp.sqrt(split - bottom)])
         return +(2 * half / (2 * mp.pi) - 1)
+
+
+def period_change_odefun(G: str, C: str, eps: str, theta0: str, j: str, dps: int) -> mp.mpf:
+    """The same ΔT/T by integrating θ'' = −V'(θ) with mpmath's odefun from θ_max at rest: on the side θ > 0 until
+    θ = 0, then on the side θ < 0 until θ' = 0 (θ_min); T is twice that time (time reversal).  A confirmation of
+    :func:`period_change` (slower), for a swing that crosses the vertical."""
+    with mp.workdps(dps + 10):
+        sw = _swing(G, C, eps, theta0, j, dps)
+        F, B, right = sw["F"], sw["B"], sw["right"]
+        if not sw["crosses"]:
+            raise ValueError("a swing that crosses θ = 0 is expected")
+        tol = mp.mpf(10) ** (-(dps + 8))
+        root_tol = mp.mpf(10) ** (-2 * (dps + 6))
+
+        def field(stiff):
+            return lambda _, y: [y[1], -(stiff * y[0] - F + B * y[0] ** 3)]
+        sol = mp.odefun(field(right), 0, [sw["top"], mp.mpf(0)], tol=tol)
+        t1 = mp.findroot(lambda t: sol(t)[0], mp.acos(-sw["F"] / sw["top"]) if abs(sw["F"]) < sw["top"] else 1,
+                         tol=root_tol)
+        sol = mp.odefun(field(mp.mpf(1)), t1, [mp.mpf(0), sol(t1)[1]], tol=tol)
+        t2 = mp.findroot(lambda t: sol(t)[1], mp.pi, tol=root_tol)
+        return +(2 * t2 / (2 * mp.pi) - 1)
 
 
 def state(eps, dps: int, ratio: str = RATIO) -> dict:
