@@ -1,5 +1,6 @@
 """Haag 1935, chapter VII, n°98: the dissymmetric blade of the gravity pendulum, (295)–(301): derivation, printed
-forms, the truth (the reduced gravity pendulum) and the assessed Results."""
+forms, the truth (the reduced gravity pendulum) and the assessed Results.  The tests that need the built Results
+(chapter II's closure) are in the full tier (slow); the truth's own tests are quick."""
 import functools
 
 import mpmath as mp
@@ -26,6 +27,7 @@ def derived(eq, name):
     return built()[rid(eq, name)].derived
 
 
+@pytest.mark.slow
 def test_286_rebuilt_from_chapter_two_is_minus_GCj2_over_4():
     deps = built()
     assert sp.simplify(derivation.eq286(deps) + G * C_s * j_eq**2 / 4) == 0
@@ -34,6 +36,7 @@ def test_286_rebuilt_from_chapter_two_is_minus_GCj2_over_4():
     assert sp.limit(i, derivation.eps, 0) == 0 and i != 0
 
 
+@pytest.mark.slow
 def test_the_line_before_295_lacks_the_pi_of_154_and_that_makes_2pi_minus_1():
     """The printed line differs from the derived one by its last term only, and the printed (2π − 1) is what that
     term gives without its 1/π; putting 1 for 2π − 1 in the printed (295) gives the derived one."""
@@ -48,6 +51,7 @@ def test_the_line_before_295_lacks_the_pi_of_154_and_that_makes_2pi_minus_1():
     assert sp.simplify(sp.expand_trig(derived(300, "eps") - printed.eq300().xreplace({printed.TWO_PI_1: 1}))) == 0
 
 
+@pytest.mark.slow
 def test_extremes_found_by_sympy():
     tan_alpha = 2 * eps_E / (sp.pi * C_s * theta0**2)
     assert sp.simplify(derived(296, "tan_alpha") - tan_alpha) == 0
@@ -63,6 +67,7 @@ def test_extremes_found_by_sympy():
     assert sp.simplify(printed.eq296_D().subs(phi1, -sp.pi / 2)) != 0
 
 
+@pytest.mark.slow
 def test_300_and_301_solved_and_the_factor_pi():
     gamma = derivation.gamma_a
     assert sp.simplify(derived(300, "eps") - sp.pi / 2 * C_s * theta0**2 * sp.tan(gamma)) == 0
@@ -72,6 +77,7 @@ def test_300_and_301_solved_and_the_factor_pi():
     assert sp.simplify(small - printed.eq301()) == 0
 
 
+@pytest.mark.slow
 def test_claims_side_and_G():
     assert sp.simplify(derived(298, "side") + G * eps_E / (sp.pi * theta0)) == 0
     assert derived(301, "free_of_G") == 0
@@ -109,6 +115,7 @@ def _formula(form, eps, ratio):
     return f(e, t0, p1)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("ratio", ["-0.4", "0.5"])
 def test_truth_agrees_with_the_derived_295_not_the_printed(ratio):
     with mp.workdps(30):
@@ -147,6 +154,7 @@ DISCREPANCIES = {rid(295, "sum"), rid(295, "dT"), rid(296, "D"), rid(296, "tan_a
                  rid(301, "eps")}
 
 
+@pytest.mark.slow
 def test_every_result_assessed_passes_and_the_discrepancies_are_the_expected_ones():
     b = built()
     for i in IDS:

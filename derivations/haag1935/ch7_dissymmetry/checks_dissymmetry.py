@@ -70,8 +70,8 @@ def jmax_order() -> checks.Order:
         env = _env(eps)
         return verify.value_at(expr, env) / env["theta_0"]
     return checks.Order(param="ε_E", values=checks.Geometric(*truth.EPS_RANGE), truth=_jmax_ratio, at=at, expected=1,
-                        truth_desc=MODEL + "; j of the largest T by findroot (secant) of the truth's dT/dj (central "
-                                           "difference), over θ0", params=PARAMS,
+                        truth_desc=MODEL + "; j of the largest T by findroot (secant) of the truth's dT/dj (five-point "
+                                           "central difference), over θ0", params=PARAMS,
                         note="j/θ0 fixed at first order (tan α fixed); the residual is the next order")
 
 
@@ -128,7 +128,7 @@ def side_order() -> checks.Order:
         st = truth.state(_eps_str(eps), dps)
         return truth.slope(st, 0, dps) * mp.mpf(st["theta0"])
     return checks.Order(param="ε_E", values=checks.Geometric(*truth.EPS_RANGE), truth=true, at=at, expected=2,
-                        truth_desc=MODEL + "; dT/dj at j = 0 by central difference, times θ0", params=PARAMS,
+                        truth_desc=MODEL + "; dT/dj at j = 0 by five-point central difference, times θ0", params=PARAMS,
                         note="its sign, opposite to ε_E's, is the claim")
 
 
