@@ -28,7 +28,7 @@ from ..ch2_dissymmetry.derivation import A_d, B_d, eps_E as eps_E_fn, phi1
 from ..ch2_perturbations.derivation import g_fn
 from ..ch7_gravity.symbols import C_s, eps
 from ..common import rid
-from ..symbols import Fn, G, G_2, Gn, K, a, a1, lam, s, vl, wl, z, zp
+from ..symbols import Fn, G, G_2, Gn, K, a1, lam, s, wl, z, zp
 
 eps_E = sp.Symbol("varepsilon_E", real=True)   # ΔE/E, constant (n°44, n°98): the ε of (295)–(301)
 alpha_a = sp.Symbol("alpha", real=True)        # the angle of (296)

@@ -50,7 +50,8 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(295, "dT"), "ΔT/T of the dissymmetric blade with the unbalance j, in φ1", S("295"),
              r"\frac{\Delta T}{T}", derivation.eq295, deps=(rid(295, "sum"), rid(140, "g")), printed=printed.eq295,
              readings=(READ_EPS, READ_2PI),
-             check=checks.All((dT_order("-0.4"), dT_order("0.5")), truth=MODEL + ": ΔT/T(j, ε_E) − ΔT/T(0, 0), at j = −0.4θ0 and 0.5θ0"),
+             check=checks.All((dT_order("-0.4"), dT_order("0.5")),
+                              truth=MODEL + ": ΔT/T(j, ε_E) − ΔT/T(0, 0), at j = −0.4θ0 and 0.5θ0"),
              note="j = −θ0 sin φ1 (153), g1 = ε_E G2 ((140), ε_E constant). " + MISSING_PI
                   + " Checked with the pendulum crossing to the soft side (j = −0.4θ0) and on the stiff side "
                     "(j = 0.5θ0)." + TRUTH_SCOPE),
@@ -97,8 +98,9 @@ def specs() -> tuple[Spec, ...]:
              r"\lim \frac{j_{\max}}{\theta_0}", derivation.jmax_large_dissymmetry, deps=(J_MAX,), printed=None,
              check=checks.Proof("j_max/θ0 → −1 as ε_E/(Cθ0²) → ∞ (the swing then almost entirely on the soft side)",
                                 holds=lambda e: sp.simplify(e + 1) == 0, truth=EXACT)),
-        Spec(rid(298, "side"), "the larger modulus is on the side opposite to the shift of the equilibrium that makes T "
-             "grow", S(None), r"\frac{d}{dj}\frac{\Delta T}{T}\Big|_{j=0}", derivation.slope_at_vertical,
+        Spec(rid(298, "side"),
+             "the larger modulus is on the side opposite to the shift of the equilibrium that makes T grow", S(None),
+             r"\frac{d}{dj}\frac{\Delta T}{T}\Big|_{j=0}", derivation.slope_at_vertical,
              deps=(rid(295, "dT"),), printed=None, check=side_order(),
              note="Derived slope −ε_E G/(πθ0) at j = 0: opposite in sign to ε_E. (The printed (295) gives −ε_E G/θ0: "
                   "the same sign, so the claim stands either way.)" + TRUTH_SCOPE),
