@@ -13,8 +13,8 @@ of the rod from the vertical:
 
 It is conservative, so one period is T = 2∫dθ/√(2(E − V)) between the turning points θ_min, θ_max, E = V(θ_max),
 for the swing of half-width θ0 = (θ_max − θ_min)/2 (Haag's amplitude of θ1 = θ − j; starting instead from
-θ = j + θ0 would make the symmetric pendulum's T uneven in j by a second-order amount, GCθ0²·θ0, which moves the
-maximum of T when α is that small).  The turning point below is a root of the branch's quartic (mpmath's polyroots);
+θ = j + θ0 would make the symmetric pendulum's T uneven in j at second order, which moves the maximum of T by about
+GCθ0³/10: as much as (301)'s own correction when γ is of order θ0).  The turning point below is a root of the branch's quartic (mpmath's polyroots);
 E − V(θ) is written (θ_t − θ)·S(θ_t, θ) without cancellation and θ = θ_t ∓ u² removes the inverse square roots,
 so that each piece (split at θ = 0 where the stiffness jumps) is a smooth quadrature (mpmath's quad) at 30 digits
 (45 to confirm).  ΔT/T = T/(2π) − 1.
