@@ -1,7 +1,12 @@
 """Haag 1935, chapter VII, n°98–99, eqs. (295)–(301): the dissymmetric blade of a gravity pendulum with an
 unbalance j; the extremes of the period and how to measure ε.
 
-:mod:`.table` (the Results).
+:mod:`.derivation` (SymPy: chapter II's derived (154) specialised to the gravity pendulum, plus (286) rebuilt from
+chapter II's (132)–(134) and chapter VII's (260), (262), the extremes solved by SymPy), :mod:`.printed` (the text
+and its readings), :mod:`.truth` (the reduced gravity pendulum with the one-sided stiffness, the cubic of (283) and
+the clamping couple: its period by quadrature of the energy integral, confirmed by odefun), :mod:`.checks_dissymmetry`
+(order checks in ε_E, the minimum's check), :mod:`.table` (the Results).  n°99 announces an unpublished theory: no
+Result.
 """
 from . import table
 
