@@ -73,7 +73,7 @@ def specs() -> tuple[Spec, ...]:
         # ---------------------------------------------------------------- n°97
         Spec(rid(284, "law_G"), "n°97: (141) with K = 0 and Q = ελ is proportional to G", src(97, None),
              r"\frac{\Delta_q T}{T}", derivation.law_97, deps=(rid(141, "dT"),) + PROPORTIONAL,
-             check=checks.All((over_G, check.law_order())),
+             check=checks.All((check.law_order(), over_G)),
              note=N97 + "(139) at K = 0, Q = K(z − z') = ελ (45), (260), ελ = G2/G (262). Checked at q = 0 (a stiffer "
                         "blade) against the eigenproblem; q ≥ 1 would need the exact blade with the modified law."),
         Spec(rid(284, "friction_G"), "n°97: (147) with K = 0 and Q = ελ is proportional to G", src(97, None),
