@@ -159,10 +159,13 @@ class Orbit:
     N: tuple
 
 
-def _linear_guess(blade: linear_blade.Blade, a, R, g, theta0, tau, dps):
-    """Loads at the nodes and Ω of the linearised principal mode (pendsym.suspension)."""
+def _linear_guess(blade: linear_blade.Blade, a, R, g, theta0, tau, dps, mode_name: str = "principal"):
+    """Loads at the nodes and Ω of a linearised mode (pendsym.suspension): the principal one (its node
+    lowest), or the slow one (the smaller n²: near the critical distance of a gravity pendulum the
+    principal mode is the fast one)."""
     sus = suspension.solve(blade, dps)
-    mode = suspension.modes(sus, a, R, g)[0]
+    modes = suspension.modes(sus, a, R, g)
+    mode = min(modes, key=lambda m: m.n2) if mode_name == "slow" else modes[0]
     lam = suspension.number(blade.length)
     X, Y, c0 = [], [], []
     for t in tau:
@@ -175,13 +178,14 @@ def _linear_guess(blade: linear_blade.Blade, a, R, g, theta0, tau, dps):
     return X, Y, c0, mode.n2
 
 
-def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30) -> Orbit:
-    """The principal oscillation of amplitude θ0, by collocation at ``nodes`` nodes (see the module)."""
+def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30, mode: str = "principal") -> Orbit:
+    """The oscillation of amplitude θ0 continued from the linear ``mode`` ("principal" or "slow", see
+    :func:`_linear_guess`), by collocation at ``nodes`` nodes (see the module)."""
     wdps = working_dps(blade, dps)
     with mp.workdps(wdps):
         a, R, g, theta0 = (suspension.number(x) for x in (a, R, g, theta0))
         tau, d1, d2, row0, d2e = _operators(nodes, wdps)
-        X0, Y0, c00, omega2_lin = _linear_guess(blade, a, R, g, theta0, tau, dps)
+        X0, Y0, c00, omega2_lin = _linear_guess(blade, a, R, g, theta0, tau, dps, mode)
         n = nodes
         # scaled unknowns: X − 1, Y/θ0, c0/θ0, Ω/Ω_lin
         u0 = [x - 1 for x in X0] + [y / theta0 for y in Y0] + [c / theta0 for c in c00] + [mp.mpf(1)]

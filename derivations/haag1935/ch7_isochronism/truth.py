@@ -2,9 +2,9 @@
 (:mod:`..ch7_gravity.truth`: a = a1 + ελ with a1 where det K = 0 of the directly solved blade).
 
 - The isochronism error (283): the slow principal oscillation of amplitude θ0 on the exact large-deflection blade
-  (the collocation of :mod:`pendsym.nonlinear_blade`, its elastica, operators and residuals), started from the
-  *slow* mode of the linear eigenproblem (``nonlinear_blade.orbit`` starts from the mode whose node is lowest,
-  which near a1 is the fast one); T(θ0)/T_lin − 1 with T_lin = 2π/n of that linear slow mode.  Along the path
+  (``pendsym.nonlinear_blade.orbit(..., mode="slow")``: the collocation started from the *slow* mode of the linear
+  eigenproblem, not from the mode whose node is lowest, which near a1 is the fast one); T(θ0)/T_lin − 1 with
+  T_lin = 2π/n of that linear slow mode.  Along the path
   θ0 = ε/10 (so that the next amplitude term, relative θ0²G ~ ε/100, falls like ε).  Four collocation nodes:
   five agree with them to 28 digits of T/T_lin at ε = 1e-2 (tests), 35 digits at 45-digit precision and ε = 1e-3;
   ΔT/T ~ 1e-7–1e-6 then holds 21 digits or more, far below the O(ε) residual the checks fit.  Cached on disk
@@ -39,47 +39,11 @@ def _slow_omega_ratio(key: str, eps: str, theta0: str, dps: int, nodes: int) -> 
     """Ω/Ω_lin of the slow principal oscillation (Ω = ω², Ω_lin = n² of the linear slow mode)."""
     bl = gravity.base_blade(key, 1)
     env = gravity.numbers(key, 1, dps)
-    wdps = nonlinear_blade.working_dps(bl, dps)
-    with mp.workdps(wdps):
+    with mp.workdps(nonlinear_blade.working_dps(bl, dps)):
         a = env["a_1"] + mp.mpf(eps) * env["lambda"]
-        R, g, theta0 = env["R"], env["g"], mp.mpf(theta0)
-        tau, d1, d2, row0, d2e = nonlinear_blade._operators(nodes, wdps)
-        sus = suspension.solve(bl, dps)
-        slow = min(suspension.modes(sus, a, R, g), key=lambda mode: mode.n2)
-        lam = suspension.number(bl.length)
-        guess = []
-        for t in tau:
-            th = theta0 * mp.cos(t)
-            be = slow.beta * th
-            _, Yv, Nv = sus.loads(be, th)
-            guess.append((Yv, Nv + Yv * lam - be))          # Mφ'(0) = N + Yα − Xβ, linearised
-        n = nodes
-        u0 = [mp.mpf(0)] * n + [y / theta0 for y, _ in guess] + [c / theta0 for _, c in guess] + [mp.mpf(1)]
-        memo, jacobians = {}, []
-
-        def evaluate(u, variations):
-            key_u = (tuple(u), variations)
-            if key_u not in memo:
-                memo.clear()
-                X = [1 + u[j] for j in range(n)]
-                Y = [theta0 * u[n + j] for j in range(n)]
-                C = [theta0 * u[2 * n + j] for j in range(n)]
-                ends = [nonlinear_blade.end_state(bl, X[j], Y[j], C[j], wdps, variations) for j in range(n)]
-                memo[key_u] = nonlinear_blade._system(ends, X, Y, u[3 * n] * slow.n2, slow.n2, theta0, a, R, g,
-                                                      d1, d2, row0, d2e, variations)
-            return memo[key_u]
-
-        def jac(*u):
-            if len(jacobians) < nonlinear_blade.JACOBIANS:
-                jacobians.append(evaluate(u, True)[1])
-            return jacobians[-1]
-        u = mp.findroot(lambda *u: evaluate(u, False)[0], u0, J=jac, tol=mp.mpf(10) ** (-(dps + 6)), verify=False,
-                        maxsteps=40)
-        u = [u[i] for i in range(3 * n + 1)]
-        residual = max(abs(r) for r in evaluate(u, False)[0]) / g
-        if not residual < mp.mpf(10) ** (-(dps + 3)):
-            raise nonlinear_blade.NoConvergence(f"slow orbit: residual {mp.nstr(residual, 5)}")
-        return u[3 * n]
+        slow = min(suspension.modes(suspension.solve(bl, dps), a, env["R"], env["g"]), key=lambda mode: mode.n2)
+        o = nonlinear_blade.orbit(bl, a, env["R"], env["g"], mp.mpf(theta0), nodes, dps, mode="slow")
+        return o.omega2 / slow.n2
 
 
 def relative_change(key: str, eps, dps: int = 30, nodes: int = NODES) -> mp.mpf:
