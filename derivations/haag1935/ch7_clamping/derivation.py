@@ -1,10 +1,10 @@
 """Haag 1935, chapter VII, n°94–95, eqs. (286)–(290), and chapter VIII, n°103, eq. (318): the gravity pendulum's
 clamping errors, derived step by step from chapter II's derived (117), (118), (127), (132), (133) and chapter VII's
-derived (256)–(262), then chapter III's uniform blade (159), (169), (170).
+derived (256)–(262), then chapter III's uniform blade (159), (169), (170); (318) from (289) by u → iu, ε → −ε.
 
 Each function takes the built dependencies (``deps``, by id) and returns a SymPy expression.  The limit ε → 0
-(a = a1 + ελ (256)) is taken as a SymPy series in ε after K of (260), z' of (257) and a1 = −wλ (41) are put in;
-the two regimes of n°95 differ by the order of j:
+(a = a1 + ελ (256)) is taken as a SymPy series in ε after K of (260) and z' of (257) are put in (a kept in Q1, as
+Haag keeps it, then a = a1 + ελ, a1 = −wλ (41)); the two regimes of n°95 differ by the order of j:
 
 - not regulated (n°94–95, (286)): i, i' finite and j = ĵ/ε (j holds the factor 1/ε, (117)): the leading term,
   of order ε^{-2} in Q1;
@@ -24,6 +24,7 @@ from ..ch7_gravity.symbols import C_s, a_r, eps
 
 A_p = sp.symbols("A_0:5", real=True)            # F = Σ A_p K^p (287)
 j_hat = sp.Symbol("hat_j", real=True)          # εj: j of the pendulum that is not regulated, j = ĵ/ε (n°95)
+HALF = sp.Symbol("t", positive=True)           # th(u/2) in (289), tan(u/2) in (318)
 
 
 def derived_of(deps, eq: int, name: str) -> sp.Expr:
@@ -47,10 +48,14 @@ def Q1_in_moments(deps) -> sp.Expr:
 
 
 def near_critical(deps, expr: sp.Expr) -> sp.Expr:
-    """expr at a = a1 + ελ (256), a1 = −wλ (41), with K of (260) and z' of (257) (the slow mode's focus)."""
-    table = {K: derived_of(deps, 260, "K"), zp: derived_of(deps, 257, "zp")}
-    out = sp.sympify(expr).subs(table, simultaneous=True).subs(a, a1 + derived_of(deps, 256, "epsilon"))
-    return out.subs(a1, derived_of(deps, 41, "a1"))
+    """expr near a1 (a − a1 = ελ (256)): K of (260) and z' of (257) (the slow mode's focus), both O(ε) and
+    w0 + O(ε); a itself kept, as Haag keeps it in Q1 (it becomes a1 = −wλ in (286), (288))."""
+    return sp.sympify(expr).subs({K: derived_of(deps, 260, "K"), zp: derived_of(deps, 257, "zp")}, simultaneous=True)
+
+
+def to_a1(deps, expr: sp.Expr) -> sp.Expr:
+    """expr with a = a1 + ελ (256) and a1 = −wλ (41)."""
+    return expr.subs(a, a1 + derived_of(deps, 256, "epsilon")).subs(a1, derived_of(deps, 41, "a1"))
 
 
 def at_rest(expr: sp.Expr) -> sp.Expr:
@@ -74,16 +79,18 @@ def tilt_G(deps) -> sp.Expr:
 
 # ---------------------------------------------------------------- n°95: the pendulum not regulated, (286)
 def Q1_286(deps) -> sp.Expr:
-    """n°95: Q1 of (133) with j = ĵ/ε ((117): j holds 1/ε), a = a1 + ελ, K (260), z' (257): the leading term
-    (ε^{-2}), then ĵ = εj and F_n at K = 0; a1 restored for −wλ (41)."""
+    """n°95: Q1 of (133) with j = ĵ/ε ((117): j holds 1/ε), K (260), z' (257): the leading term (ε^{-2}), then
+    ĵ = εj and F_n at K = 0."""
     expr = near_critical(deps, Q1_in_moments(deps)).subs(j_eq, j_hat / eps)
     lead = leading(sp.expand(expr * eps**2), 0).subs(j_hat, j_eq)
-    return sp.factor(at_rest(lead)).subs(derived_of(deps, 41, "a1"), a1)
+    return sp.factor(at_rest(lead))
 
 
 def Q1_286_C(deps) -> sp.Expr:
-    """n°95: Q1 = −(j²/4)CG2: the first form with a1 = −wλ (41) and wλ − F_4 = CG2 (284, F_4 at K = 0)."""
-    Q1 = derived_of(deps, 286, "Q1").subs(a1, derived_of(deps, 41, "a1"))
+    """n°95: Q1 = −(j²/4)CG2: the first form with a = a1 + ελ, a1 = −wλ (the ελj²/4 is of order ε^{-1}, below
+    the leading ε^{-2}) and wλ − F_4 = CG2 (284, F_4 at K = 0)."""
+    Q1 = to_a1(deps, derived_of(deps, 286, "Q1")).subs(j_eq, j_hat / eps)
+    Q1 = leading(sp.expand(Q1 * eps**2), 0).subs(j_hat, j_eq)
     return sp.factor(sp.expand(Q1.subs(Fn(4), wl - C_s * G_2)))
 
 
@@ -118,20 +125,19 @@ def hp_287(deps) -> sp.Expr:
 
 
 def Q1_288(deps) -> sp.Expr:
-    """n°95: 4Q1, Q1 of (133) with i, i', j finite, a = a1 + ελ, K (260), z' (257): the leading term (ε^0);
-    h' (132) at K = 0 is (287)'s, F_2 (its symbol) at K = 0; a1 restored for −wλ (41)."""
-    expr = near_critical(deps, derived_of(deps, 133, "Q1").subs(h_132, sp.Symbol("hp_rest")))
-    lead = leading(expr.subs(h_127, derived_of(deps, 127, "h").subs(K, derived_of(deps, 260, "K"))), 0)
-    lead = lead.subs(sp.Symbol("hp_rest"), h_132).subs(derived_of(deps, 41, "a1"), a1)
-    return sp.expand(4 * lead)
+    """n°95: 4Q1, Q1 of (133) with i, i', j finite, K (260), z' (257): the leading term (ε^0); h (127) in moments,
+    h' (132) and F_2 (their symbols) taken at K = 0."""
+    expr = near_critical(deps, derived_of(deps, 133, "Q1").subs(h_127, derived_of(deps, 127, "h")))
+    return sp.collect(sp.expand(4 * leading(expr, 0)), a, sp.factor)
 
 
 def dT_288(deps) -> sp.Expr:
-    """(288): ΔT/T = Q1/Q (134), 4Q1 of n°95, Q = K(z − z') (45) with K = ελ/(z − z') (260), h' of (287),
-    a1 = −wλ (41)."""
+    """(288): ΔT/T = Q1/Q (134), 4Q1 of n°95 with h' of (287), Q = K(z − z') (45) with K = ελ/(z − z') (260),
+    a = a1 + ελ (256) and a1 = −wλ (41): the leading term (ε^{-1})."""
     Q = derived_of(deps, 45, "Q").subs(K, derived_of(deps, 260, "K_foci"))
     Q1 = derived_of(deps, 288, "Q1").subs(h_132, derived_of(deps, 287, "hp")) / 4
-    return sp.expand(sp.simplify(Q1.subs(a1, derived_of(deps, 41, "a1")) / Q))
+    numerator = sp.expand(leading(sp.expand(to_a1(deps, Q1) / Q * eps), 0) * 4 * lam)
+    return sp.collect(numerator, wl, sp.factor) / (4 * eps * lam)
 
 
 def uniform_rest(deps) -> dict:
@@ -150,8 +156,6 @@ def dT_289(deps) -> sp.Expr:
     expr = expr.subs(sp.tanh(u), 2 * sp.tanh(u / 2) / (1 + sp.tanh(u / 2) ** 2)).subs(sp.tanh(u / 2), HALF)
     return by_errors(expr).subs(HALF, sp.tanh(u / 2))
 
-
-HALF = sp.Symbol("t", positive=True)     # th(u/2) (direct) or tan(u/2) (inverted)
 
 
 def by_errors(expr: sp.Expr) -> sp.Expr:

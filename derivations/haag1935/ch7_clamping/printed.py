@@ -16,9 +16,6 @@ A0, A1, A2 = A_p[:3]
 READ_F1 = Reading("Q1 = j²(a + F_1)/4 (n°95)",
                   "F_4 (at K = 0): the second form −(j²/4)CG2, 'd'après (284)', needs a + F_4 = −(wλ − F_4) = −CG2 "
                   "(a ≈ a1 = −wλ); F_1 gives another number (the OCR, or the memoir's misprint)", certain=False)
-READ_A_IS_A1 = Reading("a in Q1 (n°95) and in 4Q1 = a(i + i' + j)² + …",
-                       "a = a1 + ελ, kept as printed; its leading value a1 = −wλ is the derived form's (ελ(i + i' + j)²/4 "
-                       "is of the next order in ε)")
 READ_PI = Reading("(∂²Π/∂θ²)_{Y=−i, θ=j} before (287)",
                   "H = 4YH_3 − H_4 of (108): the letter read Π is H (h' of (132) at K = 0)", certain=False)
 READ_ALPHA_LAMBDA = Reading("−αλ(i + i' + j)² in (288)",

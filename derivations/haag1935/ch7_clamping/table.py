@@ -9,12 +9,13 @@ from ..symbols import DEFS
 from . import derivation, printed, truth
 from .truth import DIRECT, LOOSE, REGULATED
 
-NEAR = (rid(260, "K"), rid(257, "zp"), rid(256, "epsilon"), rid(41, "a1"))
+NEAR = (rid(260, "K"), rid(257, "zp"))
+TO_A1 = (rid(256, "epsilon"), rid(41, "a1"))
 Q_DEPS = (rid(45, "Q"), rid(260, "K_foci"))
 PERIOD_286, PERIOD_288 = rid(286, "dT"), rid(288, "dT")
 EXACT = "symbolic proof (SymPy)"
-LEADING = ("The limit ε → 0 is a SymPy series after K (260), z' (257), a = a1 + ελ (256) and a1 = −wλ (41) are put in "
-           "chapter II's derived form; h (127) and h' (132) in moments.")
+LEADING = ("The limit ε → 0 is a SymPy series after K (260) and z' (257) are put in chapter II's derived form; a kept, "
+           "as Haag keeps it (a = a1 + ελ → −wλ in the next step).")
 
 
 def specs() -> tuple[Spec, ...]:
@@ -30,12 +31,12 @@ def specs() -> tuple[Spec, ...]:
         # ------------------------------------------------------------ n°95, not regulated
         Spec(rid(286, "Q1"), "Q1 = j²(a + F_4)/4, the pendulum not regulated", src(95, None), "Q_1",
              derivation.Q1_286, deps=(rid(133, "Q1"), rid(127, "h"), rid(132, "hp")) + NEAR,
-             printed=printed.Q1_286, readings=(printed.READ_F1, printed.READ_A_IS_A1),
-             check=checks.Chain((PERIOD_286,)),
-             note="(133) with j = ĵ/ε ((117): j holds 1/ε), its leading term ε^{-2}; F_4 at K = 0. " + LEADING),
+             printed=printed.Q1_286, readings=(printed.READ_F1,), check=checks.Chain((PERIOD_286,)),
+             note="(133) with j = ĵ/ε ((117): j holds 1/ε), its leading term ε^{-2}; h (127), h' (132) in moments, "
+                  "F_4 at K = 0. " + LEADING),
         Spec(rid(286, "Q1_C"), "Q1 = −(j²/4)CG2", src(95, None), "Q_1", derivation.Q1_286_C,
-             deps=(rid(286, "Q1"), rid(41, "a1")), printed=printed.Q1_286_C, check=checks.Chain((PERIOD_286,)),
-             note="a1 = −wλ (41) and C = (wλ − F_4)/G2 (284)."),
+             deps=(rid(286, "Q1"),) + TO_A1, printed=printed.Q1_286_C, check=checks.Chain((PERIOD_286,)),
+             note="a = a1 + ελ, a1 = −wλ (41), the leading term kept, and C = (wλ − F_4)/G2 (284)."),
         Spec(PERIOD_286, "ΔT/T = −(j²/4)GC, the pendulum not regulated", src(95, "286"), r"\frac{\Delta T}{T}",
              derivation.dT_286, deps=(rid(286, "Q1_C"), rid(262, "G")) + Q_DEPS, printed=printed.dT_286,
              check=truth.period_order(DIRECT, 1, LOOSE, "G of the truth (stencil in g), C = (wλ − F_4)/G2 (284) by "
@@ -49,14 +50,16 @@ def specs() -> tuple[Spec, ...]:
                   "(110) (the derivation raises if a moment is left over)."),
         Spec(rid(288, "Q1"), "4Q1 = a(i + i' + j)² + i²F_2 − h'/12, the pendulum regulated", src(95, None), "4Q_1",
              derivation.Q1_288, deps=(rid(133, "Q1"), rid(127, "h")) + NEAR, printed=printed.Q1_288,
-             readings=(printed.READ_A_IS_A1,), check=checks.Chain((PERIOD_288,)),
-             note="(133) with i, i', j of one order: its leading term ε^0; F_2 at K = 0. " + LEADING),
+             check=checks.Chain((PERIOD_288,)),
+             note="(133) with i, i', j of one order: its leading term ε^0; h (127) in moments, h' and F_2 at K = 0. "
+                  + LEADING),
         Spec(PERIOD_288, "ΔT/T of the clamping errors, the pendulum regulated", src(95, "288"), r"\frac{\Delta T}{T}",
-             derivation.dT_288, deps=(rid(288, "Q1"), rid(287, "hp"), rid(41, "a1")) + Q_DEPS, printed=printed.dT_288,
+             derivation.dT_288, deps=(rid(288, "Q1"), rid(287, "hp")) + TO_A1 + Q_DEPS, printed=printed.dT_288,
              readings=(printed.READ_ALPHA_LAMBDA, READ_VW),
              check=truth.period_order(DIRECT, 1, REGULATED, "F_2, A_0, A_1, A_2 (287) by quadrature at K = 0, j = the "
                                       "exact θ"),
-             note="Q1/Q (134), Q = K(z − z') = ελ (260), h' of (287); of the order of G only."),
+             note="Q1/Q (134), Q = K(z − z') = ελ (260), h' of (287), a = a1 + ελ, a1 = −wλ (41): the leading term; of "
+                  "the order of G only."),
         Spec(rid(289, "dT"), "ΔT/T of the clamping errors, regulated, the uniform blade", src(95, "289"),
              r"\frac{\Delta T}{T}", derivation.dT_289, deps=(PERIOD_288, rid(159, "wl"), rid(169, "F2"), rid(170, "F")),
              printed=printed.dT_289, defs=DEFS,

@@ -92,7 +92,14 @@ def point(key: str, sign: int, regime: str, eps: str, dps: int) -> dict:
 
 
 def _eps_key(p) -> str:
-    return mp.nstr(mp.mpf(p), 20)
+    """ε as a 12-digit string: the sequence's values depend on the precision they were made at; the truth and
+    the formulas all take this one value."""
+    with mp.workdps(30):
+        return mp.nstr(mp.mpf(p), 12)
+
+
+def _eps(p) -> mp.mpf:
+    return mp.mpf(_eps_key(p))
 
 
 # ---------------------------------------------------------------- the formulas' inputs
@@ -123,7 +130,7 @@ def env_at(key: str, sign: int, regime: str, p, dps: int = 30, sensitivity: bool
     −d log n²/d log g of the slow mode (:func:`..ch7_gravity.truth.sensitivity`)."""
     env = dict(gravity.numbers(key, sign, dps))
     pt = point(key, sign, regime, _eps_key(p), dps)
-    env.update({"varepsilon": mp.mpf(p), "a": pt["a"], "i": pt["i"], "i'": pt["i'"], "j": pt["theta"]})
+    env.update({"varepsilon": _eps(p), "a": pt["a"], "i": pt["i"], "i'": pt["i'"], "j": pt["theta"]})
     if sign > 0:
         env.update(blade_inputs(key, sign, dps))
     if sensitivity:
@@ -141,12 +148,11 @@ def period_order(key: str, sign: int, regime: str, what: str, sensitivity: bool 
     residual of a leading term in ε falls like ε."""
     def truth(p, dps):
         pt = point(key, sign, regime, _eps_key(p), dps)
-        return pt["ratio"] * _scale(regime, pt, mp.mpf(p))
+        return pt["ratio"] * _scale(regime, pt, _eps(p))
 
     def at(expr, p):
         env = env_at(key, sign, regime, p, sensitivity=sensitivity)
-        return verify.value_at(expr, env) * _scale(regime, point(key, sign, regime, _eps_key(p), checks.DPS),
-                                                    mp.mpf(p))
+        return verify.value_at(expr, env) * _scale(regime, point(key, sign, regime, _eps_key(p), checks.DPS), _eps(p))
     errors = (f"i = 10⁻⁹ε, i' = {RATIO}i" if regime == LOOSE else f"i = 10⁻⁹, i' by (117) for j ≈ {KAPPA}i")
     return checks.Order(param="varepsilon", values=EPS, truth=truth, at=at, expected=1,
                         truth_desc=f"{MODEL.format(sign='+' if sign > 0 else '−')}; T/T0 − 1 of the slow mode, "
@@ -161,11 +167,11 @@ def tilt_order() -> checks.Order:
     times ε/i (j' ~ i/ε): residual O(ε)."""
     def truth(p, dps):
         pt = point(DIRECT, 1, LOOSE, _eps_key(p), dps)
-        return (pt["theta"] + pt["i"]) * mp.mpf(p) / pt["i"]
+        return (pt["theta"] + pt["i"]) * _eps(p) / pt["i"]
 
     def at(expr, p):
         env = env_at(DIRECT, 1, LOOSE, p, sensitivity=True)
-        return verify.value_at(expr, env) * mp.mpf(p) / env["i"]
+        return verify.value_at(expr, env) * _eps(p) / env["i"]
     return checks.Order(param="varepsilon", values=EPS, truth=truth, at=at, expected=1,
                         truth_desc=f"{MODEL.format(sign='+')}; j' = θ + i of the exact equilibrium, times ε/i; G = "
                                    f"−d log n²/d log g of the slow mode (stencil), G2 = ∫w²/M by quadrature; "
@@ -188,11 +194,11 @@ def symmetric_ratio(p, dps) -> mp.mpf:
 def symmetric_order() -> checks.Order:
     """(290): i/j at i' = 0 of the exact equilibrium against the form's i at j = 1, both over ε: residual O(ε)."""
     def truth(p, dps):
-        return symmetric_ratio(p, dps) / mp.mpf(p)
+        return symmetric_ratio(p, dps) / _eps(p)
 
     def at(expr, p):
-        env = dict(gravity.numbers(DIRECT, 1), varepsilon=mp.mpf(p), j=1)
-        return verify.value_at(expr, env) / mp.mpf(p)
+        env = dict(gravity.numbers(DIRECT, 1), varepsilon=_eps(p), j=1)
+        return verify.value_at(expr, env) / _eps(p)
     return checks.Order(param="varepsilon", values=EPS, truth=truth, at=at, expected=1,
                         truth_desc=f"{MODEL.format(sign='+')}; i/j at i' = 0 (∂θ/∂i of the exact equilibrium, from θ "
                                    f"at the two tilts of the period checks), over ε; blade {DIRECT}",
