@@ -32,7 +32,8 @@ def derived_of(deps, eq: int, name: str) -> sp.Expr:
 
 
 def leading(expr: sp.Expr, power: int) -> sp.Expr:
-    """The coefficient of ε^power in the expansion of expr as ε → 0; raises if a lower power is present."""
+    """The coefficient of ε^power in the expansion of expr as ε → 0; raises if a lower power (down to ε^{power−4})
+    is present."""
     series = sp.expand(sp.series(sp.expand(expr), eps, 0, power + 1).removeO())
     for k in range(power - 4, power):
         if sp.simplify(series.coeff(eps, k)) != 0:
