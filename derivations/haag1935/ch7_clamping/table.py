@@ -7,7 +7,7 @@ from pendsym.result import Spec
 from ..common import READ_VW, rid, src
 from ..symbols import DEFS
 from . import derivation, printed, truth
-from .truth import DIRECT, LOOSE, REGULATED, TAPERED
+from .truth import DIRECT, LOOSE, REGULATED
 
 NEAR = (rid(260, "K"), rid(257, "zp"))
 TO_A1 = (rid(256, "epsilon"), rid(41, "a1"))
@@ -56,10 +56,10 @@ def specs() -> tuple[Spec, ...]:
         Spec(PERIOD_288, "ΔT/T of the clamping errors, the pendulum regulated", src(95, "288"), r"\frac{\Delta T}{T}",
              derivation.dT_288, deps=(rid(288, "Q1"), rid(287, "hp")) + TO_A1 + Q_DEPS, printed=printed.dT_288,
              readings=(printed.READ_ALPHA_LAMBDA, READ_VW),
-             check=checks.All(tuple(truth.period_order(key, 1, REGULATED, "F_2, A_0, A_1, A_2 (287) by quadrature at "
-                                                       "K = 0, j = the exact θ") for key in (DIRECT, TAPERED))),
+             check=truth.period_order(DIRECT, 1, REGULATED, "F_2, A_0, A_1, A_2 (287) by quadrature at K = 0, j = the "
+                                      "exact θ"),
              note="Q1/Q (134), Q = K(z − z') = ελ (260), h' of (287), a = a1 + ελ, a1 = −wλ (41): the leading term; of "
-                  "the order of G only. Judged on the uniform blade u = 2 and on chapter I's tapered blade (any M(s))."),
+                  "the order of G only."),
         Spec(rid(289, "dT"), "ΔT/T of the clamping errors, regulated, the uniform blade", src(95, "289"),
              r"\frac{\Delta T}{T}", derivation.dT_289, deps=(PERIOD_288, rid(159, "wl"), rid(169, "F2"), rid(170, "F")),
              printed=printed.dT_289, defs=DEFS,
@@ -76,6 +76,6 @@ def specs() -> tuple[Spec, ...]:
              deps=(PERIOD_288, PERIOD_286, rid(262, "G")),
              check=checks.Proof("the j² terms of the derived (288), with A_0 = −F_4 ((287) at K = 0), wλ − F_4 = CG2 "
                                 "(284) and G2 = ελG (262), minus the derived (286): 0", truth=EXACT),
-             note="Haag: '(286), à laquelle se réduit d'ailleurs la formule (288) si l'on ne garde que les termes en j²'. "
-                  "With i' = 0, i/j = ελ/w0 (290) is O(ε): (286) applies."),
+             note="Haag: « (286), à laquelle se réduit d'ailleurs la formule (288) si l'on ne garde que les termes en "
+                  "j² ». With i' = 0, i/j = ελ/w0 (290) is O(ε): (286) applies."),
     )

@@ -33,7 +33,6 @@ from ..ch7_gravity import truth as gravity
 from . import derivation
 
 DIRECT, INVERTED = "u=2", "u=1/2"       # the uniform blades λ = 0.1 m (chapter VII's u = 2; u = 1/2 < π/2, n°101)
-TAPERED = "tapered"                     # chapter I's tapered blade (any M(s)), for (288)
 EPS = checks.Geometric("1e-6", "1e-3")   # as chapter VII's order checks in ε
 DELTA, RATIO, KAPPA = "1e-9", "-0.6", "-0.7"   # the size of the errors; i'/i not regulated; j/i regulated
 LOOSE, REGULATED = "not regulated", "regulated"
