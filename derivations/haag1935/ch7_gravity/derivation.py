@@ -13,7 +13,7 @@ import sympy as sp
 
 from .. import ch1_model
 from ..common import rid
-from ..symbols import (E, G_2, K, M_lambda, R, W_over_mg, a, a1, beta1, e, g, h, lam, m, s, theta, u, v0, vl, w0,
+from ..symbols import (E, Fn, G_2, K, M_lambda, R, W_over_mg, a, a1, beta1, e, g, h, lam, m, s, theta, u, v0, vl, w0,
                       wl, z, zp)
 from .symbols import a_r, eps, eps_p, l_syn
 
@@ -174,8 +174,8 @@ def S_91(deps) -> sp.Expr:
 
 
 # ---------------------------------------------------------------- n°93: (285)
-def C_of_phi2(phi2: sp.Expr, wl_value: sp.Expr) -> sp.Expr:
-    """(284): C = (wλ − F4)/(wλ − F2) at K = 0, F_n = ∫_0^λ φ2^n ds (79), G2 = wλ − F2 by (81).
+def C_of_phi2(C_form: sp.Expr, phi2: sp.Expr, wl_value: sp.Expr) -> sp.Expr:
+    """(285): the derived C of (284) in wλ, F2, F4, with F_n = ∫_0^λ φ2^n ds (79) at K = 0 and wλ (159).
 
     φ2 and wλ in exponentials of u (158), (159): with p = e^{us/λ} (ds = λ dp/(up)) and q = e^u the integrals
     are of rational functions of p; the result is rational in e^u and u."""
@@ -183,12 +183,12 @@ def C_of_phi2(phi2: sp.Expr, wl_value: sp.Expr) -> sp.Expr:
     f = sp.expand(sp.expand_power_exp(sp.powsimp(phi2.subs(s, lam * sp.log(p) / u), force=True))).subs(sp.exp(u), q)
     F = {n: (lam / u * sp.integrate(sp.cancel(f**n / p), (p, 1, q))).subs(sp.log(q), u) for n in (2, 4)}
     w_q = sp.cancel(sp.expand(wl_value.rewrite(sp.exp)).subs(sp.exp(u), q))
-    return sp.factor(sp.cancel((w_q - F[4]) / (w_q - F[2]))).subs(q, sp.exp(u))
+    return sp.factor(sp.cancel(C_form.subs({Fn(2): F[2], Fn(4): F[4], wl: w_q}))).subs(q, sp.exp(u))
 
 
 def C_285(deps) -> sp.Expr:
-    """(285): C of (284) for the uniform blade, φ2 of (158) and wλ of (159)."""
-    return C_of_phi2(derived_of(deps, 158, "phi2"), derived_of(deps, 159, "wl"))
+    """(285): C of (284) (its second form, (wλ − F4)/(wλ − F2)) for the uniform blade, φ2 of (158), wλ of (159)."""
+    return C_of_phi2(derived_of(deps, 284, "C_F2"), derived_of(deps, 158, "phi2"), derived_of(deps, 159, "wl"))
 
 
 def C_285_same(deps) -> sp.Expr:

@@ -145,8 +145,8 @@ def specs() -> tuple[Spec, ...]:
              check=both(lambda key: order(suppleness, "S = W'/W of the slow mode: W = strain energy, W + W' = "
                                           "½ q·(Kq)", 1, key))),
         Spec(rid(285, "C"), "C of the uniform blade", src(93, "285"), "C", derivation.C_285,
-             deps=(rid(158, "phi2"), rid(159, "wl")), printed=printed.C_285, check=C_values(1),
-             note="C = (wλ − F4)/(wλ − F2) at K = 0 ((284), (81)); (283) itself rests on chapter II and is not built."),
+             deps=(rid(284, "C_F2"), rid(158, "phi2"), rid(159, "wl")), printed=printed.C_285, check=C_values(1),
+             note="C = (wλ − F4)/(wλ − F2) of (284) (eq284.C_F2, from (111) through (283)), F_n of (79) at K = 0."),
         Spec(rid(285, "C_exponential"), "C = (3/8)(sh 4u − 4u)/(sh²u(sh 2u + 2u))", src(93, "285"), "C",
              derivation.C_285_same, deps=(rid(285, "C"),), printed=printed.C_285_exponential, check=C_values(1)),
     )
