@@ -78,7 +78,7 @@ def choose_form(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> Choice:
     # the vertex form competes where the vertex lies inside the domain
     # the vertex form where it cancels less is taken when it holds the bound: the plain form
     # cancels along the vertex curve, which a sample of a few hundred points barely meets
-    for label, form, notes in stable_forms(expr, args, vertex=bool(vertex_points(expr, tuple(args), seed))):
+    for label, form, notes in stable_forms(expr, args, vertex=True):
         # measured as emitted (statements: a leaf's pieces nest too deep for one Python expression)
         acc = measure(emitted_py(seed, args, form), expr, args, full)
         preferred = label == NEAR_VERTEX.label and acc.max_scaled <= BOUND

@@ -130,6 +130,36 @@ class SeriesNearZero:
 
 NEAR_ZERO = SeriesNearZero()
 
+
+@dataclass(frozen=True)
+class SmallFactorsLast:
+    """The whole expression a product with a power b^n (n ≥ 2) of a factor b that vanishes as the hard argument x → 0
+    (sin(α/2), x itself), evaluated as ((C·b)·b)…: the other factors first, then one rounding per
+    factor b.  Evaluated as written, b^n is a subnormal (sin²(α/2) at α = 1e-156) whose rounding a
+    large C then multiplies (F_max = 4ghm sin²(α/2)/l: 1.5e4 ulp).  Tried where the accepted domain
+    of x would not reach 0 otherwise (:func:`.kernel.kernel_of`)."""
+
+    name: str = "small-factors-last"
+
+    @staticmethod
+    def _small(f: sp.Expr, x: sp.Symbol) -> bool:
+        return (f.is_Pow and f.exp.is_Integer and f.exp >= 2 and f.base.has(x)
+                and f.base.subs(x, 0) == 0)
+
+    def __call__(self, e: sp.Expr, x: sp.Symbol) -> sp.Expr:
+        def last(m: sp.Expr) -> sp.Expr:
+            out = sp.Mul(*[f for f in m.args if not self._small(f, x)])
+            for f in sorted((f for f in m.args if self._small(f, x)), key=sp.default_sort_key):
+                for _ in range(int(f.exp)):
+                    out = Grouped(out * f.base)
+            return out
+        # the whole expression only (a product such as F_max): inside the Horner sums of a series,
+        # every level has a factor x², and the nested units would only add roundings
+        return last(e) if e.is_Mul and any(self._small(f, x) for f in e.args) else e
+
+
+SMALL_LAST = SmallFactorsLast()
+
 # ----------------------------------------------------------------- far forms of a leaf c(x)
 
 
