@@ -74,6 +74,46 @@ def smaller_basis(e: sp.Expr) -> sp.Expr:
     return sp.Piecewise((sin_basis(e), Magnitude(sp.sin(phi)) < Magnitude(sp.cos(phi))), (cos_basis(e), True))
 
 
+def _rounded_multiple(f: sp.Expr) -> bool:
+    """sin(m·φ) or cos(m·φ) with m an integer ≥ 3 not a power of 2: m·φ is rounded, an error the
+    inputs do not have (2φ, 4φ are exact)."""
+    m, _ = f.args[0].as_coeff_Mul()
+    return m.is_Integer and abs(m) >= 3 and (int(abs(m)) & (int(abs(m)) - 1)) != 0
+
+
+def rounded_multiples(e: sp.Expr) -> int:
+    """The number of sines and cosines of a form whose argument m·φ is rounded (:func:`_rounded_multiple`)."""
+    return sum(1 for f in e.atoms(sp.sin, sp.cos) if _rounded_multiple(f))
+
+
+def multiple_angles(e: sp.Expr) -> sp.Expr:
+    """Each sin(m·φ), cos(m·φ) whose argument would be rounded (m ≥ 3, not a power of 2) written in
+    sin φ and cos φ, and each sum in the phase's own symbols alone (the trigonometric part g(φ) of
+    α k (α² q g(φ) + 32 sin φ)) in Horner form in sin φ; the grouping of the form in its other
+    arguments is kept (expanding it too cancels more: n23_dtheta at t = 6.6, 4.8 against 2.7 ulp
+    scaled on a box of 30,000 points, the as-derived form with sin 3kt 5.0)."""
+    targets = [f for f in e.atoms(sp.sin, sp.cos) if _rounded_multiple(f)]
+    if not targets:
+        raise ValueError("no rounded multiple angle")
+    e = e.xreplace({f: sp.expand_trig(f) for f in targets})
+    phases = {f.args[0] for f in e.atoms(sp.sin, sp.cos)}
+    if len(phases) != 1:
+        raise ValueError("one phase is needed")
+    (phi,) = phases
+    S = sp.Dummy("S")
+    own = phi.free_symbols
+
+    def horner(n: sp.Expr) -> sp.Expr:
+        cs = sp.Poly(sp.expand(n), S).all_coeffs()
+        out = sp.S.Zero
+        for c in cs:
+            out = out * S + c
+        return out
+    e = e.xreplace({sp.sin(phi): S})
+    e = e.replace(lambda n: n.is_Add and n.has(S) and n.free_symbols <= own | {S}, horner)
+    return e.xreplace({S: sp.sin(phi)})
+
+
 REWRITES: tuple[Rewrite, ...] = (
     Rewrite("as-derived", lambda e: e),
     Rewrite("factor", sp.factor),
@@ -83,6 +123,7 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("horner", lambda e: sp.horner(sp.expand(e)) if e.is_polynomial() else e),
     Rewrite("half-angle", half_angle, trig=True),
     Rewrite("smaller-basis", smaller_basis, trig=True),
+    Rewrite("multiple-angles", multiple_angles, trig=True),
 )
 
 # ----------------------------------------------------------------- series near t = 0
