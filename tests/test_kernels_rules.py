@@ -4,6 +4,7 @@ import dataclasses
 import math
 
 import mpmath as mp
+import pytest
 import sympy as sp
 
 from pendsym.emit import kernels as kn
@@ -22,8 +23,9 @@ def _ulp(got: float, true) -> float:
 def test_rewrites_are_named_frozen_objects_in_order():
     names = [r.name for r in kn.REWRITES]
     assert names == ["as-derived", "factor", "expand-trig", "sin-basis", "cos-basis", "horner", "half-angle",
-                     "smaller-basis"]
-    assert {r.name for r in kn.REWRITES if r.trig} == {"expand-trig", "sin-basis", "cos-basis", "half-angle", "smaller-basis"}
+                     "smaller-basis", "multiple-angles"]
+    assert {r.name for r in kn.REWRITES if r.trig} == {"expand-trig", "sin-basis", "cos-basis", "half-angle", "smaller-basis",
+                                                        "multiple-angles"}
     for r in kn.REWRITES:
         assert dataclasses.is_dataclass(r) and r.__dataclass_params__.frozen and callable(r)
 
@@ -136,3 +138,33 @@ def test_a_split_constant_is_two_doubles_whose_sum_is_the_constant():
     assert float(hi) == 1 / 3 and float(lo) != 0
     with mp.workdps(40):
         assert abs(mp.mpf(float(hi)) + mp.mpf(float(lo)) - mp.mpf(1) / 3) < mp.mpf(10) ** -32
+
+
+def test_multiple_angles_expands_only_rounded_multiples_and_keeps_the_grouping():
+    from pendsym.emit.kernels.rules import multiple_angles, rounded_multiples
+    alpha, k, t, q = sp.symbols("alpha k t q", real=True)
+    s, c = sp.sin(k * t), sp.cos(k * t)
+    e = alpha * k * (alpha**2 * q * (4 * k * t * c + 9 * s - 15 * sp.sin(3 * k * t)) + 32 * s) / 32
+    got = multiple_angles(e)
+    assert rounded_multiples(e) == 1 and rounded_multiples(got) == 0
+    assert got == alpha * k * (alpha**2 * q * (4 * k * t * c + (60 * s**2 - 36) * s) + 32 * s) / 32
+    assert rounded_multiples(sp.sin(2 * k * t) + sp.cos(4 * k * t)) == 0        # 2kt, 4kt are exact
+    with pytest.raises(ValueError):
+        multiple_angles(sp.sin(2 * k * t) * s)
+
+
+def test_small_factors_last_multiplies_the_vanishing_factor_one_at_a_time():
+    from pendsym.emit.kernels.plan import Grouped
+    from pendsym.emit.kernels.rules import SMALL_LAST
+    g, h, m, l, alpha = sp.symbols("g h m l alpha", positive=True)
+    s = sp.sin(alpha / 2)
+    got = SMALL_LAST(4 * g * h * m * s**2 / l, alpha)
+    assert got == Grouped(Grouped(4 * g * h * m * s / l) * s)
+    assert SMALL_LAST(g * sp.cos(alpha) ** 2, alpha) == g * sp.cos(alpha) ** 2    # cos does not vanish at 0
+    args = tuple(KernelArg(x.name, 0.0, 100.0) for x in (g, h, m, l, alpha))
+    f = kn.emitted_py("F_max", args, got)          # as printed: ((C·s)·s), no subnormal s²
+    p = (9.3, 0.054, 12.8, 0.1856, 1e-156)
+    with mp.workdps(400):
+        true = 2 * p[0] * p[1] * p[2] * (1 - mp.cos(mp.mpf(p[4]))) / p[3]
+        assert abs(f(*p) - true) <= 4 * math.ulp(float(true))
+        assert abs(4 * p[0] * p[1] * p[2] * math.sin(p[4] / 2) ** 2 / p[3] - true) > 4 * math.ulp(float(true))

@@ -12,11 +12,12 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ...result import KernelArg, Result
-from .choice import choose_form, naive_form
+from .choice import HEADROOM, choose_form, naive_form
 from .compile import emitted_py
 from .leaves import hard_argument
 from .limits import accepted_domain
-from .measure import Accuracy, Naive, measure, measure_naive, references
+from .measure import BOUND, Accuracy, Naive, measure, measure_naive, references
+from .rules import SMALL_LAST
 from .sampling import kernel_sample
 
 CONTRACT = "docs/kernel-accuracy.md"
@@ -94,5 +95,14 @@ def kernel_of(result: Result) -> Kernel | None:
     hard = hard_argument(result.derived, args)
     naive = measure_naive(naive_expr, form, result.derived, args, pts, args.index(hard) if hard is not None else 0)
     domain = accepted_domain(result.derived, args, name, choice.form)
-    return Kernel(name, result.id, args, choice.form, choice.rule, spec.kernel.doc or spec.title, spec.source.ref(),
+    rule, expr = choice.rule, choice.form
+    if hard is not None and domain == tuple((a.lo, a.hi) for a in args):
+        # the limit at 0 is lost to a subnormal power: the small factors last, where that holds it
+        x = next(s for s in result.derived.free_symbols if s.name == hard.name)
+        last = SMALL_LAST(choice.form, x)
+        if last != choice.form and (dom := accepted_domain(result.derived, args, name, last)) != domain:
+            acc = measure(emitted_py(name, args, last), result.derived, args, pts, truths)
+            if acc.max_scaled <= max(py.max_scaled, HEADROOM * BOUND):
+                rule, expr, py, domain = f"{rule}+{SMALL_LAST.name}", last, acc, dom
+    return Kernel(name, result.id, args, expr, rule, spec.kernel.doc or spec.title, spec.source.ref(),
                   py_accuracy=py, notes=choice.notes, naive=naive, reference=truths, domain=domain)
