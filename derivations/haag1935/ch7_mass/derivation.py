@@ -17,7 +17,7 @@ from ..ch2_perturbations.derivation import I_lambda, J_w
 from ..ch7_gravity.symbols import eps
 from ..ch8_inverted.derivation import rotated
 from ..common import rid
-from ..symbols import K, M_of_s, Q, a, alpha_blade, alpha_rod, beta_t, epsilon_of_s, lam, s, v, w, w0, wl, z, zp
+from ..symbols import K, M_of_s, Q, a, u, alpha_blade, alpha_rod, beta_t, epsilon_of_s, lam, s, v, w, w0, wl, z, zp
 
 # ΔT/T of the weight and dT/T of a warming (n°96): the quantities (294) relates
 DT_T = sp.Symbol("Delta T/T", real=True)
@@ -42,6 +42,20 @@ def principal_part(expr: sp.Expr) -> sp.Expr:
     return sp.factor(sp.simplify(c_num / c_den)) * eps ** (p_num - p_den)
 
 
+def in_half_tangent(expr: sp.Expr) -> sp.Expr:
+    """expr, a function of u through sh, ch, th of multiples of u/2, written rational in t = th(u/2) (as chapter
+    III's U = th(u/2), U1 = (1 − t²)/(2t) are): e^{u/2} = x, cancelled, then x² = (1 + t)/(1 − t).  Raises if
+    an odd power of e^{u/2} is left."""
+    x, t = sp.Symbol("x", positive=True), sp.Symbol("t", positive=True)
+    expr = expr.rewrite(sp.exp).replace(lambda e: isinstance(e, sp.exp) and (e.args[0] / u).is_number,
+                                        lambda e: x ** (2 * e.args[0] / u))
+    expr = sp.cancel(sp.cancel(sp.together(expr)).subs(x, sp.sqrt((1 + t) / (1 - t))))
+    if expr.has(x) or any(isinstance(p, sp.Pow) and p.exp.is_Rational and not p.exp.is_integer
+                          for p in expr.atoms(sp.Pow)):
+        raise ValueError("an odd power of e^{u/2} is left")
+    return sp.factor(expr).subs(t, sp.tanh(u / 2))
+
+
 def gap_of_K(deps) -> sp.Expr:
     """z − z' = ελ/K, from K = ελ/(z − z') (260)."""
     gap = sp.Symbol("gap", real=True)
@@ -58,8 +72,7 @@ def inertia_291(deps) -> sp.Expr:
     K_near = d(deps, 260, "K")
     expr = expr.subs(I_lambda, d(deps, 182, "I").subs(K, K_near)).subs(K, K_near)
     expr = expr.subs(zp, d(deps, 257, "zp"))
-    expr = principal_part(expr).subs(w0, d(deps, 159, "w0"))
-    return sp.factor(sp.simplify(expr))
+    return in_half_tangent(principal_part(expr).subs(w0, d(deps, 159, "w0")))
 
 
 def weight_292(deps) -> sp.Expr:
@@ -71,7 +84,7 @@ def weight_292(deps) -> sp.Expr:
 def weight_293(deps) -> sp.Expr:
     """(293): (292) with J of (183) at K of (260), the principal part in ε (J → J at K = 0)."""
     expr = d(deps, 292, "weight").subs(J_w, d(deps, 183, "J").subs(K, d(deps, 260, "K")))
-    return sp.simplify(sp.fu(principal_part(expr)))
+    return in_half_tangent(principal_part(expr))
 
 
 # ---------------------------------------------------------------- n°96: the temperature, (294)
