@@ -54,7 +54,7 @@ def specs() -> tuple[Spec, ...]:
              r"\frac{d(\Delta T)}{T}", derivation.period_294, deps=(rid(292, "weight"), rid(294, "minus2")),
              printed=printed.period_294, readings=(READ_294,), check=truth.temperature_order("relation"),
              note="d log ΔT = dT/T + d log(ΔT/T), ΔT/T ∝ 1/ε by (292) (J, λ, m'/m vary by O(α), dropped: \"partie "
-                  "principale\"). Truth: ΔT = T − T0 of the blade with weight, warmed by ±ε/100 degree, against "
+                  "principale\"). Truth: ΔT = T − T0 of the blade with weight, warmed by ε/1000 degree, against "
                   "the form at the truth's ΔT/T and dT/T; relative residual."),
         Spec(rid(294, "ratio"), "[d(ΔT)/T]/(dT/T) = −3m'J/(mελ)", src(96, None),
              r"\frac{d(\Delta T)/T}{dT/T}", derivation.ratio_294, deps=(rid(294, "dT"), rid(292, "weight")),
