@@ -20,7 +20,7 @@ from ..common import rid
 from ..symbols import K, M_of_s, Q, a, u, alpha_blade, alpha_rod, beta_t, epsilon_of_s, lam, s, v, w, w0, wl, z, zp
 
 # ΔT/T of the weight and dT/T of a warming (n°96): the quantities (294) relates
-DT_T = sp.Symbol("Delta T/T", real=True)
+DT_T = sp.Symbol(r"\Delta T/T", real=True)     # named as printed: the report sets the name as it is
 dT_T = sp.Symbol("dT/T", real=True)
 NEAR_CRITICAL = {a: -wl + eps * lam}          # (256) with a1 = −wλ (41)
 

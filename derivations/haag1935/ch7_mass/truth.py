@@ -28,6 +28,9 @@ import sympy as sp
 
 from pendsym import blade, checks, massive_blade, suspension, verify
 from ..ch7_gravity import truth as gravity
+from .derivation import DT_T
+
+DT_NAME = DT_T.name                               # ΔT/T in an environment
 
 MASS_RATIO = sp.Rational(1, 10**20)              # m'/m
 EPS = ("1e-5", "1e-3")                           # ε: four points in geometric progression at every level
@@ -90,7 +93,7 @@ def temperature_changes(key: str, sign: int, eps: str, dps: int) -> dict:
         dT = (period("none", 1) - T0) / (hh * T0)
         gap = {k: period("weight", k) - period("none", k) for k in (0, 1)}
         return {"dT/T": dT, "d(Delta T)/T": (gap[1] - gap[0]) / (hh * T0),
-                "Delta T/T": period_change(key, sign, eps, "weight", dps)}
+                DT_NAME: period_change(key, sign, eps, "weight", dps)}
 
 
 @functools.lru_cache(maxsize=16)
@@ -140,7 +143,7 @@ def temperature_order(quantity: str, key: str = "u=2", sign: int = 1) -> checks.
     or its ratio to dT/T ("ratio": against the form in J, ε, times ε/(m'/m)): residual O(ε)."""
     def scale(env, p):
         if quantity == "relation":
-            return env["Delta T/T"] * env["dT/T"]
+            return env[DT_NAME] * env["dT/T"]
         return mp.mpf(MASS_RATIO.p) / MASS_RATIO.q / mp.mpf(p)
 
     def env_of(p, dps):
