@@ -20,10 +20,10 @@ c0 = (Mφ')(0) and the shear Y(0): two initial-value integrations (mpmath's Tayl
 by segment across the jumps of M and μ) give the 2×2 matrix D(ω²) of the two pendulum equations, and the
 principal mode is the root of det D(ω²) = 0 next to the massless principal n² (:mod:`pendsym.suspension`),
 found by mpmath's ``findroot`` (secant); with ``slowest`` the root next to the smaller massless n² instead
-(the slow mode of a pendulum near its critical distance, whose node is below A).  g < 0 with M < 0 (the
-inverted blade: every force in units of mg changes sign with g) needs no change in the equations.  With the inertia the blade depends on ω² and is integrated again
-at each iterate; with the weight only it is integrated once.  The axial inertia (ẍ, of the second order) and
-the rotary inertia of the sections are not modelled.  Units: SI with m = 1.
+(the slow mode of a pendulum near its critical distance).  g < 0 with M < 0 (an inverted blade: every force
+in units of mg changes sign with g) needs no change in the equations.  With the inertia the blade depends on
+ω² and is integrated again at each iterate; with the weight only it is integrated once.  The axial inertia
+(ẍ, of the second order) and the rotary inertia of the sections are not modelled.  Units: SI with m = 1.
 """
 from __future__ import annotations
 
@@ -134,11 +134,10 @@ def principal_n2(mb: MassiveBlade, a, R, g, dps: int = 30, slowest: bool = False
         return +root
 
 
-def relative_period_change(mb: MassiveBlade, a, R, g, dps: int = 30, slowest: bool = False) -> mp.mpf:
-    """T/T0 − 1 = √(n0²/n²) − 1, T0 the period of the same pendulum on the massless blade (the principal
-    mode, or with ``slowest`` the slower one: :func:`principal_n2`)."""
+def relative_period_change(mb: MassiveBlade, a, R, g, dps: int = 30) -> mp.mpf:
+    """T/T0 − 1 = √(n0²/n²) − 1, T0 the period of the same pendulum on the massless blade."""
     massless = MassiveBlade(mb.blade, 0, mb.inertia, mb.weight)
-    n2 = principal_n2(mb, a, R, g, dps, slowest)
-    n2_0 = principal_n2(massless, a, R, g, dps, slowest)
+    n2 = principal_n2(mb, a, R, g, dps)
+    n2_0 = principal_n2(massless, a, R, g, dps)
     with mp.workdps(dps + 10):
         return mp.sqrt(n2_0 / n2) - 1
