@@ -4,7 +4,7 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
-from pendsym import blade, checks, massive_blade, stages, suspension
+from pendsym import checks, massive_blade, stages, suspension
 from derivations.haag1935.ch7_gravity import truth as gravity
 from derivations.haag1935.ch7_gravity.symbols import eps
 from derivations.haag1935.ch7_mass import derivation, table, table_inverted, truth
