@@ -19,9 +19,11 @@ centre of gravity and of the angular momentum about G, linearised,
 c0 = (Mφ')(0) and the shear Y(0): two initial-value integrations (mpmath's Taylor solver ``odefun``, segment
 by segment across the jumps of M and μ) give the 2×2 matrix D(ω²) of the two pendulum equations, and the
 principal mode is the root of det D(ω²) = 0 next to the massless principal n² (:mod:`pendsym.suspension`),
-found by mpmath's ``findroot`` (secant).  With the inertia the blade depends on ω² and is integrated again
-at each iterate; with the weight only it is integrated once.  The axial inertia (ẍ, of the second order) and
-the rotary inertia of the sections are not modelled.  Units: SI with m = 1.
+found by mpmath's ``findroot`` (secant); with ``slowest`` the root next to the smaller massless n² instead
+(the slow mode of a pendulum near its critical distance).  g < 0 with M < 0 (an inverted blade: every force
+in units of mg changes sign with g) needs no change in the equations.  With the inertia the blade depends on
+ω² and is integrated again at each iterate; with the weight only it is integrated once.  The axial inertia
+(ẍ, of the second order) and the rotary inertia of the sections are not modelled.  Units: SI with m = 1.
 """
 from __future__ import annotations
 
@@ -113,16 +115,18 @@ def determinant(mb: MassiveBlade, a, R, g, omega2, wdps: int):
 
 
 @functools.lru_cache(maxsize=64)
-def principal_n2(mb: MassiveBlade, a, R, g, dps: int = 30) -> mp.mpf:
+def principal_n2(mb: MassiveBlade, a, R, g, dps: int = 30, slowest: bool = False) -> mp.mpf:
     """n² of the principal oscillation of the pendulum on the blade with mass (see the module).
 
     a, R, g are strings or exact numbers (the cache key).  The root of det D is sought next to the massless
-    principal n² (pendsym.suspension.modes), which is the limit μ → 0."""
+    principal n² (pendsym.suspension.modes), which is the limit μ → 0; with ``slowest``, next to the smaller
+    massless n² of the two modes."""
     wdps = working_dps(mb, dps)
     sus = suspension.solve(mb.blade, dps)
     with mp.workdps(wdps):
         a_, R_, g_ = (suspension.number(x) for x in (a, R, g))
-        n2_0 = suspension.modes(sus, a_, R_, g_)[0].n2
+        pair = suspension.modes(sus, a_, R_, g_)
+        n2_0 = min(md.n2 for md in pair) if slowest else pair[0].n2
         scale = abs(determinant(mb, a_, R_, g_, n2_0, wdps)) + 1     # det is O(1) in units of g, n²
         root = mp.findroot(lambda x: determinant(mb, a_, R_, g_, x, wdps) / scale,
                            (n2_0, n2_0 * (1 + mp.mpf(10) ** -6)), solver="secant",
