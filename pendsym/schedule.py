@@ -9,6 +9,7 @@ leaves no orphan behind.
 """
 from __future__ import annotations
 
+import contextlib
 import ctypes
 import multiprocessing
 import os
@@ -30,9 +31,27 @@ def _die_with_parent(parent: int) -> None:
         os._exit(1)
 
 
+@contextlib.contextmanager
+def _sigint_held():
+    """SIGINT blocked while workers are forked: they are born with it blocked and unblock it only once
+    they ignore it (:func:`_ignore_sigint`), so a Ctrl-C that arrives as they start reaches the parent
+    alone, when this block ends, and never kills a worker half-started."""
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+def _ignore_sigint() -> None:
+    """In a worker: Ctrl-C is the parent's to report (a pending one is discarded with SIG_IGN)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+
+
 def _adopt(parent: int, results, fn) -> None:
     _die_with_parent(parent)
-    signal.signal(signal.SIGINT, signal.SIG_IGN)   # Ctrl-C is the parent's to report
+    _ignore_sigint()
     _INHERITED["results"], _INHERITED["fn"] = results, fn
 
 
@@ -62,13 +81,16 @@ def per_result(results: Mapping[str, object], ids: Sequence[str], fn: Callable,
                 progress(i)
         return out
     ctx = multiprocessing.get_context("fork")
-    pool = ctx.Pool(workers(), initializer=_adopt, initargs=(os.getpid(), results, fn))
+    pool = None
     try:
+        with _sigint_held():
+            pool = ctx.Pool(workers(), initializer=_adopt, initargs=(os.getpid(), results, fn))
         pending = [pool.apply_async(_call, (i,), callback=(lambda _v, i=i: progress(i)) if progress else None)
                    for i in ids]
         out = [p.get() for p in pending]
     except BaseException:
-        pool.terminate()        # Ctrl-C or a failed job: no worker outlives this call
+        if pool is not None:
+            pool.terminate()    # Ctrl-C or a failed job: no worker outlives this call
         raise
     pool.close()
     pool.join()
@@ -88,13 +110,14 @@ def in_background(fn: Callable, *args):
 
     def child():
         _die_with_parent(parent)
-        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        _ignore_sigint()
         try:
             send.send((True, fn(*args)))
         except BaseException as exc:  # reported in the parent
             send.send((False, f"{type(exc).__name__}: {exc}"))
     proc = ctx.Process(target=child, daemon=True)
-    proc.start()
+    with _sigint_held():
+        proc.start()
     send.close()
 
     def get():

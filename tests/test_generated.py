@@ -38,6 +38,8 @@ CHAIN_DISCREPANCIES = {
     "haag1935.eq339.middle": "a lost bracket; judged through (339) (#14)",
     "haag1935.eq346.z_half": "the slip of n°110; judged through (346) G2, whose printed form fails (#14)",
     "haag1935.eq346.y0": "a lost prime; judged through (346) G2 (#14)",
+    **{f"haag1935.{name}": "the factor (2π − 1) of n°98; judged through (297) and (300), whose printed forms fail (#13)"
+       for name in ("eq296.D", "eq296.tan_alpha", "eq296.D_alpha", "eq296.sin_beta", "eq300.relation")},
 }
 UNCHECKED: dict[str, str] = {}
 

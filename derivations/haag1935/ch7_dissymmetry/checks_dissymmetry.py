@@ -136,7 +136,7 @@ def minimum_check():
     """(298): the truth's T on j/θ0 from just below the printed (298) to 1 (the end of the range, the derived
     minimum): its smallest value on the grid is at the end j = θ0 (the derived j), not at the printed j."""
     def run(result, level):
-        pairs, notes, printed_ok = [], [], True
+        pairs, notes, printed_ok, printed_off = [], [], True, []
         with mp.workdps(40):
             for eps in ("1e-4", "1e-3"):
                 env = _env(eps)
@@ -151,12 +151,15 @@ def minimum_check():
                 least = grid[min(range(len(grid)), key=lambda k: values[k])]
                 pairs.append((f"ε_E = {eps}", j_derived / t0, least / t0))
                 printed_ok &= abs(least - j_printed) < mp.mpf(10) ** -20 * t0
+                printed_off.append(abs(least - j_printed) / t0)
                 slope = truth.slope(st, j_printed, 30)
                 notes.append(f"ε_E = {eps}: printed j/θ0 = {mp.nstr(j_printed / t0, 6)}, truth dT/dj there "
                              f"{mp.nstr(slope, 4)} (T still falling); truth's least T of the grid at j/θ0 = "
                              f"{mp.nstr(least / t0, 6)}")
         ev = verify.value_check(truth_desc=MODEL + "; T on a grid of j from 0.95× the printed (298) to θ0: where it "
                                                    "is least", pairs=pairs, tol=mp.mpf(10) ** -20, params=PARAMS,
-                                kind="quadrature", note="; ".join(notes))
+                                kind="quadrature",
+                                note="; ".join(notes) + f"; printed form: max residual {mp.nstr(max(printed_off), 6)} "
+                                                        "(|j/θ0| from the truth's least T)")
         return dataclasses.replace(ev, printed_agrees=bool(printed_ok))
     return run

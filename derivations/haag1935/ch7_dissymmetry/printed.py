@@ -26,6 +26,9 @@ READ_2PI = Reading("(2π − 1) in (295), D, (296), sin β, sin(2γ − α), (30
                    "1/π of (154); the same factor six times, so the memoir's (the derivation has 1 in its place)")
 READ_300_G = Reading("G in (300), ε = (Gπ/2)θ0² …", "C: (296), from which (300) is drawn, has C, and so has (301), its "
                      "limit for γ small (an OCR confusion of C and G, or a misprint)", certain=False)
+READ_LINE_295 = Reading("−4j cos φ1/θ0, the last term of the line before (295)",
+                        "as printed, without the 1/π of (154) (the OCR gives the line whole; every later formula's "
+                        "(2π − 1) is what this line gives, so the memoir's)")
 READ_ALPHA_BETA = Reading("α, β in (297), (298)", "α of (296) (printed), β in (0, α) with sin β = sin α/(2π − 1)")
 
 # the printed α and β as functions of ε, C, θ0 (the definitions of n°98)

@@ -44,7 +44,7 @@ def specs() -> tuple[Spec, ...]:
     return (
         Spec(rid(295, "sum"), "(4/G)ΔT/T = −Cj² + (g1/G2)(−1 + (2φ1 − sin 2φ1)/π − 4j cos φ1/(πθ0))", S(None),
              r"\frac{4}{G}\frac{\Delta T}{T}", derivation.eq295_sum, deps=SUM_DEPS, printed=printed.eq295_sum,
-             check=dT_order("-0.4", in_j=True),
+             readings=(READ_EPS, printed.READ_LINE_295), check=dT_order("-0.4", in_j=True),
              note=FROM_154 + " Printed −4j cos φ1/θ0: the 1/π of (154) is lost (the source of (2π − 1) below)."
                   + TRUTH_SCOPE),
         Spec(rid(295, "dT"), "ΔT/T of the dissymmetric blade with the unbalance j, in φ1", S("295"),
