@@ -16,11 +16,12 @@ from dataclasses import dataclass
 import mpmath as mp
 import sympy as sp
 
-from pendsym import checks, nonlinear_blade, suspension, verify
+from pendsym import checks, suspension, verify
 from pendsym.result import Evidence, Result
 from .. import ch1_model, profiles
 from ..ch1_launch.truth import (DIRECT, MODES, base_env, at_s, direct_modes, haag_env, mode_points, s_points, s_value,
                                 values_at)
+from ..ch2_general import truth as period_truth
 from ..common import CONFIRM_DPS, DPS
 from ..symbols import Fn, Gn, K, L, M_of_s, a, c_axis, lam, s, x_fork, z, zp
 
@@ -316,34 +317,27 @@ class ForkOptimum:
 
 
 # ---------------------------------------------------------------- n°25: (64) to the third order, (85) to the fourth
-# The orbits are chapter II's (111) check's (the same blade, pendulum, amplitudes and digits): one computation,
-# shared through pendsym.cache.
-ORBIT_CASE = ("uniform", "compact")
-ORBIT_AMPLITUDES = ("0.005", "0.02", 4)
+# The orbits are chapter II's (111) check's (its blade, pendulum, amplitudes and digits): one computation, shared
+# through pendsym.cache.
 ORBIT = ("pendsym.nonlinear_blade: the principal periodic oscillation of the rigid pendulum on the exact "
          "large-deflection blade (collocation, 30 digits); the end A's (θ, α, β) at the collocation node of largest θ")
-
-
-def _track(theta0, dps: int):
-    name, pend = ORBIT_CASE
-    a_v, R_v, g_v = profiles.PENDULUMS[pend]
-    return nonlinear_blade.track(profiles.profile(name), a_v, R_v, g_v, mp.nstr(mp.mpf(theta0), 40), dps)
 
 
 def end_order(coordinate: str) -> checks.Order:
     """n°25: (85) α = λ − (F2/2)θ² is exact to the fourth order in θ, (64) β = −(a + z')θ to the third: the
     end's exact position at a node of the exact orbit against the formula at that node's θ (α even and β odd
     in θ, footnote (2))."""
-    name, pend = ORBIT_CASE
+    name, pend = period_truth.CASE
     expected = 4.0 if coordinate == "alpha" else 3.0
 
     def truth(theta0, dps):
-        return getattr(_track(theta0, dps), coordinate)[0]
+        return getattr(period_truth.track(name, pend, theta0, dps), coordinate)[0]
 
     def at(expr, theta0):
-        env = {**haag_env(name, pend), **haag_integrals(name, pend), "theta": _track(theta0, DPS).theta[0]}
+        theta = period_truth.track(name, pend, theta0, DPS).theta[0]
+        env = {**haag_env(name, pend), **haag_integrals(name, pend), "theta": theta}
         return verify.value_at(expr, env)
-    return checks.Order(param="θ0", values=lambda level: verify.geometric(*ORBIT_AMPLITUDES), truth=truth, at=at,
+    return checks.Order(param="θ0", values=period_truth.amplitudes, truth=truth, at=at,
                         expected=expected, truth_desc=ORBIT, confirm_dps=33,
                         params=(("blade", name), ("pendulum", pend)),
                         note="F2 (79) by quadrature on the shot blade at the linear mode's K; a, z' of the foci (30)")

@@ -51,12 +51,19 @@ def blade_env(name: str, pend: str, dps: int) -> dict:
         return env
 
 
+def track(name: str, pend: str, theta0, dps: int) -> nonlinear_blade.Track:
+    """The principal oscillation of amplitude θ0 of the pendulum ``pend`` on the exact blade ``name`` (its
+    period and the end's positions; cached on disk, so every check that asks for the same orbit shares it)."""
+    a, R, g = profiles.PENDULUMS[pend]
+    return nonlinear_blade.track(profiles.profile(name), a, R, g, mp.nstr(mp.mpf(theta0), 40), dps)
+
+
 def relative_change(name: str, pend: str):
     """truth(θ0, dps): T(θ0)/T_lin − 1 of the exact blade."""
     def truth(theta0, dps):
         bl = profiles.profile(name)
         a, R, g = profiles.PENDULUMS[pend]
-        T = nonlinear_blade.period(bl, a, R, g, mp.nstr(mp.mpf(theta0), 40), dps)
+        T = track(name, pend, theta0, dps).period
         T_lin = nonlinear_blade.linear_period(bl, a, R, g, dps)
         with mp.workdps(dps + 10):
             return T / T_lin - 1

@@ -10,21 +10,13 @@ from __future__ import annotations
 
 from pendsym.result import Spec
 
+from ..memoir_order import merged
 from . import table, table_launch
 
 
-def equation(spec: Spec) -> int:
-    return int(spec.id.split(".")[1][2:])
-
-
 def specs() -> tuple[Spec, ...]:
-    """table's Results with table_launch's inserted in the memoir's order: each before the first Result of table
-    with a larger equation number."""
-    merged = list(table.specs())
-    for spec in table_launch.specs():
-        place = next((i for i, other in enumerate(merged) if equation(other) > equation(spec)), len(merged))
-        merged.insert(place, spec)
-    return tuple(merged)
+    """table's Results with table_launch's inserted in the memoir's order."""
+    return merged(table.specs(), table_launch.specs())
 
 
 __all__ = ["specs"]
