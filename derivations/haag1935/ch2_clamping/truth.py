@@ -94,9 +94,11 @@ def step_in_Q1(part: str) -> checks.Order:
     (``part`` "129": the form is (129), Δf derived; "delta_f": the form is Δf, (129) derived), over Q."""
     from ..ch2_common import theta1
     from ..symbols import K, n_squared
-    other = derivation.eq132_delta_f() if part == "129" else derivation.eq129()
 
     def to_Q1(form):
+        # the derived other part is built here, when the check runs, not when the table is read (it costs
+        # seconds of SymPy that every `pendsym` command would pay; both derivations are lru_cached)
+        other = derivation.eq132_delta_f() if part == "129" else derivation.eq129()
         return sp.cancel(sp.expand(K * (form + other) / (2 * n_squared * theta1)))
     what = "Δf" if part == "129" else "(129)"
     return order("period", 4, over_Q=True, to_Q1=to_Q1,
