@@ -17,11 +17,14 @@ from typing import Callable, Iterable, Mapping, Sequence
 import mpmath as mp
 import sympy as sp
 from sympy.core.function import AppliedUndef
+from sympy.functions.elementary.hyperbolic import HyperbolicFunction
+from sympy.functions.elementary.trigonometric import TrigonometricFunction
 
 from .result import Evidence
 
 LEVELS = {"quick": 4, "full": 6}
 EXACT_OPS = 150   # past this size, exact simplification can run for minutes: the 50-digit verdict stands
+EXACT_TERMS = 12  # past this many terms in the expanded numerator of a trigonometric or hyperbolic difference, too
 
 
 def rounded(x) -> float:
@@ -86,8 +89,26 @@ def numeric_difference(a: sp.Expr, b: sp.Expr, seed: str, points: int = 6, dps: 
     return worst
 
 
+def expansion_terms(d: sp.Expr) -> int:
+    """The number of terms of the expanded numerator of d over a common denominator (functions kept as
+    atoms): a structural, machine-independent measure of how much work is left once d is put together."""
+    return len(sp.Add.make_args(sp.expand(sp.numer(sp.together(d)))))
+
+
+def beyond_exact_reach(d: sp.Expr) -> bool:
+    """True when exact simplification of d could stall: d holds circular or hyperbolic functions and its
+    expanded numerator has more than EXACT_TERMS terms.  There SymPy's trigsimp factors polynomials over
+    Q(i) in several function atoms, and that can run for minutes on a form far below EXACT_OPS (a
+    hyperbolic form of 113 operations whose numerator has 20 terms ran over 60 s).  A structural measure,
+    not a clock, so that a derive's output never depends on the machine's load."""
+    return d.has(TrigonometricFunction, HyperbolicFunction) and expansion_terms(d) > EXACT_TERMS
+
+
 def exactly_equal(a: sp.Expr, b: sp.Expr) -> bool:
-    """True when SymPy proves a − b = 0 (simplification, then trig expansion)."""
+    """True when SymPy proves a − b = 0 (simplification, then trig expansion); False, without trying,
+    for a difference :func:`beyond_exact_reach` (the caller's 50-digit comparison then stands)."""
+    if beyond_exact_reach(a - b):
+        return False
     d = sp.simplify(a - b)
     if d == 0:
         return True

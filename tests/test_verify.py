@@ -1,4 +1,6 @@
 """pendsym.verify: order fitting, form comparison, evidence that can fail."""
+import threading
+
 import mpmath as mp
 import sympy as sp
 
@@ -67,3 +69,50 @@ def test_printed_decimals_per_component_of_a_tuple():
     assert status == "match" and how.count("correctly rounded") == 3
     status, _ = verify.compare_decimal(sp.Tuple(sp.Rational(449, 100), sp.Rational(328, 10), 36), derived, (2, 1, 0))
     assert status == "discrepancy"
+
+
+# ----------------------------------------------------------------- the guard of exact simplification
+u, R, lam = sp.symbols("u R lambda", positive=True)
+
+
+def _hyperbolic_pair():
+    """An identity that SymPy's simplify does not finish within minutes (over 60 s, then killed; 108
+    operations, below EXACT_OPS): ΔT/T of a blade's inertia near the critical length, in sh, ch, th of u/2
+    against the same written in th(u/2) alone (U1 = (1 − th²)/(2 th))."""
+    sh, ch, th = sp.sinh(u / 2), sp.cosh(u / 2), sp.tanh(u / 2)
+    derived = (lam**2 * (-3 * u * sh**2 * th + 3 * u * ch**2 * th + 10 * sh**2 * ch**2 * th**2 - 6 * sh**2 * ch**2)
+               / (16 * u**3 * (R**2 + lam**2 / (u**2 * sp.sinh(u) ** 2)) * sh**2 * ch**2 * th))
+    U1 = (1 - th**2) / (2 * th)
+    printed = lam**2 / 4 * (3 * U1**2 + (th - 3 * U1) / u) / (R**2 * u**2 + lam**2 * U1**2)
+    return printed, derived
+
+
+def test_a_form_beyond_exact_reach_is_left_to_the_numbers():
+    printed, derived = _hyperbolic_pair()
+    assert sp.count_ops(printed) + sp.count_ops(derived) < verify.EXACT_OPS
+    assert verify.expansion_terms(printed - derived) > verify.EXACT_TERMS
+    answer = []
+    worker = threading.Thread(target=lambda: answer.append(verify.exactly_equal(printed, derived)), daemon=True)
+    worker.start()
+    worker.join(timeout=20)     # unguarded, simplify runs for minutes: the test fails here (its thread is left)
+    assert answer == [False]    # guarded, at once: simplify is not tried
+    status, how = verify.compare_forms(printed, derived, "guard")
+    assert (status, how) == ("match", "identical at random points to 50 digits")
+    wrong = derived * (1 + sp.Rational(1, 10**6))
+    assert verify.compare_forms(printed, wrong, "guard")[0] == "discrepancy"
+
+
+def test_the_guard_leaves_small_identities_to_simplify():
+    assert verify.exactly_equal(sp.sinh(2 * u), 2 * sp.sinh(u) * sp.cosh(u))
+    assert verify.exactly_equal(sp.cosh(u) ** 2, 1 + sp.sinh(u) ** 2)
+    assert not verify.exactly_equal(sp.sinh(2 * u), sp.sinh(u) * sp.cosh(u))
+    assert verify.compare_forms(sp.cos(2 * x), 1 - 2 * sp.sin(x) ** 2, "t3") == \
+        ("match", "identical by exact simplification")
+
+
+def test_the_guard_counts_terms_not_seconds():
+    """The measure is structural: the same form gives the same count (a derive's output must not follow
+    the machine's load)."""
+    printed, derived = _hyperbolic_pair()
+    assert verify.expansion_terms(printed - derived) == verify.expansion_terms(printed - derived)
+    assert verify.expansion_terms((x + 1) ** 3 - 1) == 3
