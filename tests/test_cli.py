@@ -22,21 +22,39 @@ def test_list_json_has_every_charbonnier_paragraph(root):
     assert all(r["status"] in ("match", "discrepancy", "derived-only") for r in rows)
 
 
-@pytest.mark.parametrize("args", [
+BAD_INPUT = [
     ("check", "charbonnier1908.n99.nothing"),
     ("list", "--memoir", "nosuch"),
     ("derive", "nosuch.id"),
     ("frobnicate",),
     ("check",),
     ("check", "charbonnier1908.n21.dT", "--level", "extreme"),
-])
+]
+
+
+def one_line_exit_2(code, out, err, starts="pendsym: error:"):
+    assert code == 2
+    assert out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(starts), err
+    assert "Traceback" not in err
+    return lines[0]
+
+
+@pytest.mark.parametrize("args", BAD_INPUT)
+def test_bad_input_is_one_line_and_exit_2_in_process(capsys, args):
+    """Quick tier: the same inputs through cli.main in this process (one import of the memoirs for all);
+    the real command, a process each, is the slow tier's test below."""
+    code = cli.main(list(args))
+    out, err = capsys.readouterr()
+    one_line_exit_2(code, out, err)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("args", BAD_INPUT)
 def test_bad_input_is_one_line_and_exit_2(args):
     p = run(*args)
-    assert p.returncode == 2
-    assert p.stdout == ""
-    lines = p.stderr.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith("pendsym: error:"), p.stderr
-    assert "Traceback" not in p.stderr
+    one_line_exit_2(p.returncode, p.stdout, p.stderr)
 
 
 def test_derive_one_id_prints_its_closure(capsys):
@@ -70,11 +88,22 @@ def test_a_failed_check_fails_derive_with_a_summary(tmp_path, root):
     assert again.returncode == 1 and "nothing changed" not in again.stdout   # a failure is never "nothing changed"
 
 
-@pytest.mark.parametrize("args, message", [
+MORE_BAD_INPUT = [
     (("derive", "charbonnier1908.n21.dT", "--out", "x"), "apply to a full derive"),
     (("derive", "--out", "/proc/pendsym"), "cannot write"),
     (("check", "haag1935.eq43"), "nearest: haag1935.eq043"),
-])
+]
+
+
+@pytest.mark.parametrize("args, message", MORE_BAD_INPUT)
+def test_more_bad_input_is_one_line_in_process(capsys, args, message):
+    code = cli.main(list(args))
+    out, err = capsys.readouterr()
+    assert message in one_line_exit_2(code, out, err)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("args, message", MORE_BAD_INPUT)
 def test_more_bad_input_is_one_line(args, message):
     p = run(*args)
     assert p.returncode == 2 and p.stdout == ""
