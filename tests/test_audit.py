@@ -29,6 +29,7 @@ def test_the_stationary_points_and_zeros_of_a_polynomial_argument_are_hard_point
         assert min(abs(p[1] - c), abs(p[1] - c - 1), abs(p[1] - c + 1)) < 1e-12
 
 
+@pytest.mark.slow
 def test_hard_points_hold_the_ends_and_the_doubles_inside_them():
     pts = pt.hard_points(ARGS, ["u", "K"], "if (u < 0.5):", (K - u) ** 2, (u, K), "s")
     us, ks = {p[0] for p in pts}, {p[1] for p in pts}

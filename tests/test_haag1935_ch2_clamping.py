@@ -1,5 +1,6 @@
 """Haag 1935, chapter II, n°31–35: the derivation of (116)–(134), its printed forms and its truth."""
 import mpmath as mp
+import pytest
 import sympy as sp
 
 from pendsym import verify
@@ -75,6 +76,7 @@ def test_table_ids_and_size():
     assert {f"haag1935.eq{n:03d}" for n in range(116, 135)} <= {i.rsplit(".", 1)[0] for i in ids}
 
 
+@pytest.mark.slow
 def test_the_truth_judges_the_printed_sum_against_133():
     """Against the exact tilted blade, ΔT/T = Q1/Q falls off like i⁴ with the derived (= printed (133)) Q1,
     only like i² with Q1 from the printed (129) + Δf."""

@@ -1,5 +1,6 @@
 """Clamping errors on the exact blade: the tilted equilibrium and the small oscillation about it."""
 import mpmath as mp
+import pytest
 import sympy as sp
 
 from pendsym import blade as linear_blade
@@ -46,6 +47,7 @@ def test_tilted_equilibrium_against_the_linear_blade():
     assert 6 < errs[0] / errs[1] < 10                      # ≈ 8: third order
 
 
+@pytest.mark.slow
 def test_mirror_symmetry_and_second_order_period():
     """(i, i') → (−i, −i') mirrors the system: θ changes sign, the period does not; the period's change
     is of the second order in the tilt (ratio ≈ 4 when i halves)."""

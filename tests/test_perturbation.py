@@ -12,6 +12,7 @@ eps = sp.Symbol("epsilon", real=True)
 th, dth = sp.symbols("theta thetadot", real=True)
 
 
+@pytest.mark.slow
 def test_theta1_solves_the_forced_equation_exactly():
     # θ1'' + k²θ1 = −εφ(t) for the Duhamel form, with φ explicit in t
     phi_t = t * sp.cos(3 * t) + sp.sin(k * t) ** 2
