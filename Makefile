@@ -28,8 +28,10 @@ derive: $(STAMP)
 test: $(STAMP)
 	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto --dist loadfile --durations=15
 
+# the quick tier (under 3 min on a cold cache): a test over ~2 s CPU goes to the slow tier, with a cheaper
+# sibling here; the 10 slowest tests are listed
 test-quick: $(STAMP)
-	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto --dist loadfile -m "not slow"
+	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto --dist loadfile -m "not slow" --durations=10
 
 tex-tools:
 	@command -v latexmk >/dev/null 2>&1 && kpsewhich pgfplots.sty adjustbox.sty enumitem.sty xltabular.sty needspace.sty >/dev/null 2>&1 || \
