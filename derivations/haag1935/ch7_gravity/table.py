@@ -10,7 +10,7 @@ from pendsym.result import Spec
 from ..ch1_motion import truth as ch1_truth
 from ..common import READ_VW, rid, src
 from ..symbols import DEFS, a1, lam, u, wl
-from . import derivation, printed
+from . import derivation, kernels, printed
 from .checks_gravity import (U_SMALL, C_values, along_blade, g_correction, inverse_eps, on, order, sensitivity,
                              suppleness, temperature, u_path)
 from .symbols import eps, eps_p, l_syn, a_r
@@ -78,7 +78,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(263, "G"), "G = (U1² + U2/u)/(2ε), uniform blade", src(85, "263"), "G", derivation.G_263,
              deps=(rid(262, "G"), rid(166, "Gamma2")), printed=printed.eq263,
              check=order(sensitivity, "εG, G = −d log n²/d log g (stencil)", 1, "u=2", scale=inverse_eps,
-                         with_energy=True)),
+                         with_energy=True), kernel=kernels.G_KERNEL),
         Spec(rid(264, "G"), "G = 1/(εu²), u small", src(85, "264"), "G", derivation.G_264, deps=(rid(263, "G"),),
              printed=printed.eq264,
              note="(263) is 1/(εu²)(1 + u⁴/45 + …); G − G2/Q = −1 is relative εu², made u⁸/100 by the path.",
@@ -146,6 +146,7 @@ def specs() -> tuple[Spec, ...]:
                                           "½ q·(Kq)", 1, key))),
         Spec(rid(285, "C"), "C of the uniform blade", src(93, "285"), "C", derivation.C_285,
              deps=(rid(284, "C_F2"), rid(158, "phi2"), rid(159, "wl")), printed=printed.C_285, check=C_values(1),
+             kernel=kernels.C_KERNEL,
              note="C = (wλ − F4)/(wλ − F2) of (284) (eq284.C_F2, from (111) through (283)), F_n of (79) at K = 0."),
         Spec(rid(285, "C_exponential"), "C = (3/8)(sh 4u − 4u)/(sh²u(sh 2u + 2u))", src(93, "285"), "C",
              derivation.C_285_same, deps=(rid(285, "C"),), printed=printed.C_285_exponential, check=C_values(1)),

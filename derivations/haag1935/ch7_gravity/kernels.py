@@ -1,0 +1,33 @@
+"""Haag 1935, chapter VII: the kernels asked of the emitters, with their declared domains (issue #13).
+
+* G of (263), the sensitivity coefficient of the gravity pendulum on a uniform blade with direct
+  suspension, G = (U_1² + U_2/u)/(2ε) = (1/sh²u + coth u/u)/(2ε): the principal part in ε of
+  G = −d log n²/d log g (62) at a = a1 + ελ (256).  It is physically meaningful for ε ≪ 1 (its relative
+  error is O(ε): 0.93ε at u = 2 in the Result's order check), hence ε ≤ 0.1 declared.  As u → 0 it
+  grows as 1/(εu²) (264) (no finite limit: u ≥ 1e-6); as u → ∞ it falls as 1/(2εu).
+* C of (285), the isochronism coefficient of the same pendulum (ΔT/T = −(θ0²/16)GC, (283)),
+  C = (3/8)(sh 4u − 4u)/(sh²u(sh 2u + 2u)), a function of u alone, meaningful for every u > 0:
+  C → 1 as u → 0 (the short-blade limit, where C − 1 = O(u²)) and C → 3/2 as u → ∞ (the thread).
+  The derived form is rational in e^u (e^{8u} overflows above u ≈ 88.7) and cancels as u → 0
+  (e^{8u} − 8ue^{4u} − 1 = O(u³)).
+
+Both Results live in this package's :mod:`.table` (n°85 and n°93): the isochronism package
+(:mod:`..ch7_isochronism`) holds only the general-blade forms of (281)–(284), which are not closed.
+"""
+from __future__ import annotations
+
+from pendsym.result import KernelArg, KernelSpec
+
+from ..ch3_uniform.kernels import NAIVE, U_ARG
+
+# a − a1 = ελ (256): the distance to the critical point in blade lengths; (262)–(263) are its principal part
+EPS_ARG = KernelArg("varepsilon", 1e-9, 0.1, log=True)
+
+G_KERNEL = KernelSpec(args=(U_ARG, EPS_ARG), naive_defs=NAIVE,
+                      doc="G = (U_1² + U_2/u)/(2ε) (263), the sensitivity coefficient −d log n²/d log g of the "
+                          "gravity pendulum on a uniform blade, direct suspension, principal part in ε (ε ≪ 1); "
+                          "G ~ 1/(εu²) as u → 0 (264), G ~ 1/(2εu) as u → ∞.")
+C_KERNEL = KernelSpec(args=(U_ARG,), naive_defs=NAIVE,
+                      doc="C = (3/8)(sh 4u − 4u)/(sh²u(sh 2u + 2u)) (285), the isochronism coefficient of the "
+                          "gravity pendulum on a uniform blade (ΔT/T = −(θ0²/16)GC, (283)); C → 1 as u → 0, "
+                          "C → 3/2 as u → ∞ (the thread).")
