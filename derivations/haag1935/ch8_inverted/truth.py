@@ -299,9 +299,9 @@ N2_OFFSETS = ("-0.01", "-0.2")                 # a − a1 (m): near the critical
 def node_mode_n2(key: str, offset: str, dps: int = 30) -> tuple:
     """(a, n²) of the mode whose node is z' < 0 (the upper one of the two, zz' = −R²) of the eigenproblem
     K q = n² 𝕄 q of the rigid pendulum on the directly solved inverted blade ``key`` (g < 0), a = a1 + offset."""
-    env = truth.numbers(key, SIGN, dps)
     sus = truth.direct(key, SIGN, 0, dps)
     with mp.workdps(sus.wdps):
+        env = truth.numbers(key, SIGN, dps)        # g, R read at the working precision
         a = env["a_1"] + mp.mpf(offset)
         modes = sorted(truth.eigenmodes(sus, a, env["R"], env["g"]), key=lambda pair: pair[1])
         return a, modes[0][0]
