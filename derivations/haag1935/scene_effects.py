@@ -91,6 +91,28 @@ def _isochronism_given(inst: Instrument, used: dict[str, float]) -> dict[str, fl
     return out
 
 
+def _inverted_massive(inst: Instrument) -> bool:
+    return _inverted(inst) and inst.blade_mass is not None
+
+
+def _inverted_mass_symbols(inst: Instrument) -> dict[str, float]:
+    """The symbols of (319), (320): m, m', u, λ, R (ε comes from a1 of (310))."""
+    return {"m": inst.m, "m'": inst.blade_mass, "u": inst.blade_u, "lambda": inst.blade_length, "R": inst.R}
+
+
+def _weight_estimate(inst: Instrument) -> float:
+    """(320) as printed: (m'/(8mε))(1/u² − 1/sin²u), in absolute value."""
+    u = inst.blade_u
+    return abs(inst.blade_mass / (8 * inst.m * _epsilon(inst)) * (1 / u**2 - 1 / math.sin(u) ** 2))
+
+
+def _inertia_estimate(inst: Instrument) -> float:
+    """(319) as printed: (m'/m)λ²(6u − 8 sin u + sin 2u)/(8u(R²u² sin²u + λ²)), in absolute value."""
+    u, lam = inst.blade_u, inst.blade_length
+    return abs(inst.blade_mass / inst.m * lam**2 * (6 * u - 8 * math.sin(u) + math.sin(2 * u))
+               / (8 * u * (inst.R**2 * u**2 * math.sin(u) ** 2 + lam**2)))
+
+
 def _blade(inst: Instrument) -> dict[str, float]:
     return {"a": inst.a, "R": inst.R, "lambda": inst.blade_length, "u": inst.blade_u, "g": inst.g}
 
@@ -165,12 +187,25 @@ def effects() -> tuple[Effect, ...]:
         Effect("inverted_isochronism", "inverted blade at finite amplitude (isochronism near a1)",
                "Haag 1935, ch. VII n°93 (283) with G of (314), C of (317) (ch. VIII n°103), ε of (312), a1 of (310)",
                "haag1935.eq283.dT", applies=lambda i: _inverted(i) and i.alpha > 0,
-               estimate=lambda i: i.alpha**2 * _G_printed(i) / 16, symbols=_inverted_symbols,
+               estimate=lambda i: -i.alpha**2 * _G_printed(i) / 16, symbols=_inverted_symbols,   # C ≈ 1 (317)
                uses=(A1, G314, C317), given=_isochronism_given, relative=lambda value, i: value,
                # leading order in ε (G of (314) is its 1/ε term) and first order in θ0²G
                error=lambda rel, i: abs(rel) * (_epsilon(i) + 16 * abs(rel)), replaces=("circular",),
                couples=("inverted_blade",), order=15,
                model="leading order in ε and first order in θ0²G (relative to the linear period on the blade)"),
+        Effect("inverted_weight", "weight of the inverted blade (its mass m')",
+               "Haag 1935, ch. VIII n°103, eq. (320), ε of (312), a1 of (310)", "haag1935.eq320.weight",
+               applies=_inverted_massive, estimate=_weight_estimate, symbols=_inverted_mass_symbols,
+               uses=(A1,), given=_isochronism_given, relative=lambda value, i: value,
+               # leading order in ε; first order in m'/(mε): the weight moves the critical distance, so that
+               # T ∝ (1 − 2ΔT/T)^(−1/2) and the next term is (3/2)(ΔT/T)²
+               error=lambda rel, i: abs(rel) * (_epsilon(i) + 2 * abs(rel)), couples=("inverted_blade",), order=16,
+               model="leading order in ε, first order in m'/(mε) (relative to the linear period on the blade)"),
+        Effect("inverted_inertia", "inertia of the inverted blade (its mass m')",
+               "Haag 1935, ch. VIII n°103, eq. (319)", "haag1935.eq319.inertia", applies=_inverted_massive,
+               estimate=_inertia_estimate, symbols=_inverted_mass_symbols, relative=lambda value, i: value,
+               error=lambda rel, i: abs(rel) * (_epsilon(i) + i.blade_mass / i.m), couples=("inverted_blade",),
+               order=17, model="leading order in ε, first order in m'/m (relative to the linear period on the blade)"),
     )
 
 
@@ -186,7 +221,7 @@ def pending() -> tuple[Pending, ...]:
                     "Haag 1935, ch. II n°36–37, ch. VI n°81", lambda i: is_blade(i) and not _massive(i)),
             Pending("inverted_clamping", "clamping errors of the inverted blade (their angles are not in the scene)",
                     "Haag 1935, ch. VIII n°103 (318)", _inverted),
-            Pending("inverted_mass", "inertia and weight of the inverted blade (not wired to scenes yet)",
-                    "Haag 1935, ch. VIII n°103 (319)–(320)", _inverted),
+            Pending("inverted_mass", "inertia and weight of the inverted blade (give suspension.density)",
+                    "Haag 1935, ch. VIII n°103 (319)–(320)", lambda i: _inverted(i) and not _inverted_massive(i)),
             Pending("inverted_temperature", "temperature coefficient of the gravity meter (not in the schema)",
                     "Haag 1935, ch. VIII n°103 (315)", _inverted))
