@@ -71,6 +71,14 @@ def _unstable(inst: Instrument) -> str | None:
     return None
 
 
+def _slope_over_epsilon(rel: float, inst: Instrument, S: float) -> tuple[float, float]:
+    """d(ΔT/T)/d log g of an effect ∝ 1/ε (G of (314), (320)): ε ∝ n² to the leading order, so d log ε/d log g =
+    d log n²/d log g = −2S and d(ΔT/T)/d log g = 2S ΔT/T; its error: the next order in ε, and the effect's other
+    dependence on g (through u ∝ √g, of relative size 1/|2S|)."""
+    slope = 2 * S * rel
+    return slope, abs(slope) * (_epsilon(inst) + 1 / max(abs(2 * S), 1))
+
+
 def _inverted_symbols(inst: Instrument) -> dict[str, float]:
     return {"a": inst.a, "R": inst.R, "lambda": inst.blade_length, "u": inst.blade_u, "g": inst.g,
             "theta_0": inst.alpha}
@@ -191,7 +199,7 @@ def effects() -> tuple[Effect, ...]:
                uses=(A1, G314, C317), given=_isochronism_given, relative=lambda value, i: value,
                # leading order in ε (G of (314) is its 1/ε term) and first order in θ0²G
                error=lambda rel, i: abs(rel) * (_epsilon(i) + 16 * abs(rel)), replaces=("circular",),
-               couples=("inverted_blade",), order=15,
+               couples=("inverted_blade",), order=15, g_slope=_slope_over_epsilon,
                model="leading order in ε and first order in θ0²G (relative to the linear period on the blade)"),
         Effect("inverted_weight", "weight of the inverted blade (its mass m')",
                "Haag 1935, ch. VIII n°103, eq. (320), ε of (312), a1 of (310)", "haag1935.eq320.weight",
@@ -200,6 +208,7 @@ def effects() -> tuple[Effect, ...]:
                # leading order in ε; first order in m'/(mε): the weight moves the critical distance, so that
                # T ∝ (1 − 2ΔT/T)^(−1/2) and the next term is (3/2)(ΔT/T)²
                error=lambda rel, i: abs(rel) * (_epsilon(i) + 2 * abs(rel)), couples=("inverted_blade",), order=16,
+               g_slope=_slope_over_epsilon,
                model="leading order in ε, first order in m'/(mε) (relative to the linear period on the blade)"),
         Effect("inverted_inertia", "inertia of the inverted blade (its mass m')",
                "Haag 1935, ch. VIII n°103, eq. (319)", "haag1935.eq319.inertia", applies=_inverted_massive,

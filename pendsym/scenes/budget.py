@@ -285,9 +285,21 @@ def solve(sc: schema.Scene) -> Budget:
     interaction = COUPLING * sum(abs(rels[x] * rels[y]) for x, y in _unaccounted_pairs(kept, rels))
     error = sum(r.error for r in rows if r.status != "not available") + interaction
     if sens is not None:
-        # the base's sensitivity is exact for it; the kept effects' own dependence on g is not computed: an
-        # effect ∝ 1/ε near a critical distance varies with g as fast as the base, so it is bounded by 2|S|Σ|ΔT/T|
-        sens_err += 2 * abs(sens) * sum(abs(r) for r in rels.values())
+        # the base's sensitivity is exact for it; each kept effect adds its d(ΔT/T)/d log g when it gives it, and
+        # is bounded by 2|S||ΔT/T| when not (an effect ∝ 1/ε near a critical distance varies with g as fast as the
+        # base); a dropped effect by 2|S| × its size
+        base_sens = sens
+        for eff, _ in applicable:
+            if eff.base:
+                continue
+            if eff.key not in rels:
+                sens_err += 2 * abs(base_sens) * abs(next(r.error for r in rows if r.key == eff.key))
+            elif eff.g_slope is not None:
+                slope, slope_err = eff.g_slope(rels[eff.key], inst, base_sens)
+                sens += float(slope)
+                sens_err += float(slope_err)
+            else:
+                sens_err += 2 * abs(base_sens) * abs(rels[eff.key])
     return Budget(sc, inst, T0 * factor, error, tuple(rows), interaction, len(built), total, T0, base, sens, sens_err)
 
 
@@ -315,7 +327,7 @@ def text(b: Budget, name: str) -> str:
             lines.append("  sensitivity not available for this base")
         else:
             lines.append(f"  sensitivity S = d log T/d log g = {b.sensitivity:+.6g} ± {b.sensitivity_error:.2g} "
-                         "(dT/T = S dg/g at fixed hardware: the base's, exact for it)")
+                         "(dT/T = S dg/g at fixed hardware)")
     if "rate" in q:
         lines.append(f"  rate        {b.rate:+.4g} s/day against {sc.wanted.target_period:g} s "
                      f"(± {b.error * SECONDS_PER_DAY:.2g} s/day)")

@@ -114,6 +114,9 @@ class Effect:
     # from d log(value)/d log g to d log T/d log g (the sensitivity a gravity meter's user wants)
     g_exponents: Mapping[str, float] | None = None
     sensitivity: Callable[[float, Instrument], float] | None = None
+    # d(ΔT/T)/d log g of this effect and its error, from (ΔT/T, inst, the base's S); without it the budget bounds
+    # the effect's part of the sensitivity by 2|S||ΔT/T| (an effect ∝ 1/ε near a critical distance)
+    g_slope: Callable[[float, Instrument, float], tuple[float, float]] | None = None
     # keys of effects this one supersedes for this hardware (they are not applied when it applies)
     replaces: tuple[str, ...] = ()
     # Results whose values (at ``symbols`` and what ``given`` returns so far, in order) feed this Result's
