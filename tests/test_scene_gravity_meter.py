@@ -233,3 +233,10 @@ def test_the_gravity_meter_as_json(root, capsys):
     assert d["base"]["inverted"] is True and d["base"]["l_m"] is None and d["base"]["T0_s"] > 2
     assert d["sensitivity"] > 50 and 0 < d["sensitivity_error"] < d["sensitivity"] / 100
     assert d["within_tolerance"] is True and d["period_s"] == pytest.approx(2 * d["swing_time_s"])
+
+
+def test_the_page_of_the_gravity_meter_names_its_base(root):
+    from pendsym.scenes import page
+    b = budget_of(root)
+    tex = page.tex(b, "gm")
+    assert "(the base)" in tex and "eq034.n2\\_inverted" in tex and "Sensitivity" in tex

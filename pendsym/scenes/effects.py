@@ -67,7 +67,7 @@ class Instrument:
 
     @property
     def blade_short(self) -> float:
-        """λ/a, the small parameter of the short blade (Haag ch. VI)."""
+        """λ/a, the small parameter of the short blade."""
         return self.blade_length / self.a
 
     @property
