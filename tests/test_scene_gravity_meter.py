@@ -207,6 +207,7 @@ def test_unstable_or_inconsistent_inverted_scenes_are_refused(root):
     refused(root, "not below the critical distance", bob__a=0.036)              # a ≥ a1: unstable
     refused(root, "cannot hold the bob", suspension__thickness=1.0e-5)          # u ≥ π/2: too weak a blade
     refused(root, "beyond the perturbation theory", amplitude=0.05)            # θ0²G/16 too large
+    refused(root, "the blade's weight (m'/m", bob__a=0.035682, amplitude=0.0)   # m'/(8mε) too large near a1
     refused(root, "support is given with an inverted blade", support={"compliance": 1e-7})
     refused(root, "drift is given with an inverted blade", drift={"rate": 0.001})
 

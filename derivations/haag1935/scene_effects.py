@@ -114,6 +114,19 @@ def _weight_estimate(inst: Instrument) -> float:
     return abs(inst.blade_mass / (8 * inst.m * _epsilon(inst)) * (1 / u**2 - 1 / math.sin(u) ** 2))
 
 
+MAX_WEIGHT_TERM = 0.1        # (320) at most: beyond it the weight is no perturbation (at 1/2 it overturns the bob)
+
+
+def _too_heavy(inst: Instrument) -> str | None:
+    """The blade's weight moves the critical distance by 2ε(ΔT/T) of (320): refused beyond a perturbation."""
+    term = _weight_estimate(inst)
+    if term > MAX_WEIGHT_TERM:
+        return (f"suspension.density: the blade's weight (m'/m = {inst.blade_mass / inst.m:.3g}) changes "
+                f"the period by {term:.3g} (Haag (320)), beyond a perturbation (expected ≤ {MAX_WEIGHT_TERM:g}; at 1/2 "
+                "it overturns the bob): the inverted pendulum is too close to its critical distance for this blade")
+    return None
+
+
 def _inertia_estimate(inst: Instrument) -> float:
     """(319) as printed: (m'/m)λ²(6u − 8 sin u + sin 2u)/(8u(R²u² sin²u + λ²)), in absolute value."""
     u, lam = inst.blade_u, inst.blade_length
@@ -208,7 +221,7 @@ def effects() -> tuple[Effect, ...]:
                # leading order in ε; first order in m'/(mε): the weight moves the critical distance, so that
                # T ∝ (1 − 2ΔT/T)^(−1/2) and the next term is (3/2)(ΔT/T)²
                error=lambda rel, i: abs(rel) * (_epsilon(i) + 2 * abs(rel)), couples=("inverted_blade",), order=16,
-               g_slope=_slope_over_epsilon,
+               g_slope=_slope_over_epsilon, refuse=_too_heavy,
                model="leading order in ε, first order in m'/(mε) (relative to the linear period on the blade)"),
         Effect("inverted_inertia", "inertia of the inverted blade (its mass m')",
                "Haag 1935, ch. VIII n°103, eq. (319)", "haag1935.eq319.inertia", applies=_inverted_massive,
