@@ -86,3 +86,23 @@ def test_306_and_308_refuse_the_opposite_sign():
     assert not truth.PositiveDistanceIff()(SimpleNamespace(derived_value=-wl), "quick").passed
     assert truth.PositiveIffStable()(SimpleNamespace(derived_value=sp.tan(u / 2) - u / 2), "quick").passed
     assert not truth.PositiveIffStable()(SimpleNamespace(derived_value=u / 2 - sp.tan(u / 2)), "quick").passed
+
+
+def test_n2_of_the_inverted_blade_is_the_mode_with_the_upper_node_and_vanishes_at_a1():
+    """The scenes' n² (n°101 with n°50): the truth's mode with node z' < 0, which near a1 is the slow one; the
+    derived form agrees with it, changes sign at a1 (n² ∝ a1 − a) and is not the fast mode's n²."""
+    from pendsym import verify
+    from pendsym.scenes.budget import build
+    from derivations.haag1935.ch7_gravity import truth as gravity
+    a, n2 = truth.node_mode_n2("u=1", "-0.01")
+    with mp.workdps(40):
+        sus = gravity.direct("u=1", -1)
+        fast = max(x for x, _ in gravity.eigenmodes(sus, a, gravity.R_VALUE, -mp.mpf(gravity.G_VALUE)))
+    assert 0 < n2 < fast / 100                     # the slow mode, far below the fast one
+    form = build(["haag1935.eq034.n2_inverted"])["haag1935.eq034.n2_inverted"].derived
+    a1 = truth.critical("u=1")
+    with mp.workdps(40):
+        env = {"u": mp.mpf(1), "lambda": mp.mpf("0.1"), "R": mp.mpf(gravity.R_VALUE), "g": mp.mpf(gravity.G_VALUE)}
+        assert abs(verify.value_at(form, dict(env, a=a)) / n2 - 1) < mp.mpf("1e-25")
+        assert abs(verify.value_at(form, dict(env, a=a)) / fast - 1) > mp.mpf("0.5")
+        assert verify.value_at(form, dict(env, a=a1 + mp.mpf("0.01"))) < 0 < verify.value_at(form, dict(env, a=a1 - mp.mpf("0.001")))

@@ -8,6 +8,13 @@ isochronism error (244) contains the circular error θ0²/16 of the rigid pendul
 effect already counts: the blade's part is (244) − θ0²/16.  What the engine does not give for a blade
 is listed by :func:`pending`: the clamping errors (their angles are not in the scene), and the
 finite-amplitude terms and the blade's mass for a blade that is not short.
+
+The inverted blade (chapter VIII: a gravity meter) has no rigid-pendulum base: the base is the slow vibration's
+n² of the inverted uniform blade (eq034.n2_inverted: n°101's u → iu, g → −g on (34), (36), (30)), whose derivative
+in g (u ∝ √g) gives the sensitivity d log T/d log g; its finite amplitude is (283) ΔT/T = −(θ0²/16)GC with G of
+(314) and C of (317) (n°103), ε = (a1 − a)/λ (312) with a1 of (310); it replaces the circular error θ0²/16 of a
+hanging pendulum.  A scene outside the stability windows (u ≥ π/2, where no a > 0 is stable (311), or a ≥ a1 (305),
+(310)) is refused before any build.
 """
 from __future__ import annotations
 
@@ -18,12 +25,121 @@ from pendsym.scenes.effects import Effect, Instrument, Pending
 SHORT = 0.1          # λ/a at most: chapter VI's short blade
 
 
+def _direct(inst: Instrument) -> bool:
+    return inst.kind == "blade" and not inst.inverted
+
+
+def _inverted(inst: Instrument) -> bool:
+    return inst.kind == "blade" and inst.inverted
+
+
+def _critical(inst: Instrument) -> float:
+    """a1 = λ/(u tan u), (310) as printed: the guard of the refusal and the estimate only (the values come from
+    the Results)."""
+    u = inst.blade_u
+    return inst.blade_length / (u * math.tan(u))
+
+
+def _epsilon(inst: Instrument) -> float:
+    """ε = (a1 − a)/λ (312), from the printed (310) (for the estimates)."""
+    return (_critical(inst) - inst.a) / inst.blade_length
+
+
+def _G_printed(inst: Instrument) -> float:
+    """G of (314) as printed (for the estimates)."""
+    u = inst.blade_u
+    return (1 / math.sin(u) ** 2 + 1 / (u * math.tan(u))) / (2 * _epsilon(inst))
+
+
+MAX_AMPLITUDE_TERM = 0.01     # θ0²G/16 at most: (283) is the first term in θ0²G
+
+
+def _unstable(inst: Instrument) -> str | None:
+    """The inverted pendulum is stable only when the blade's couple exceeds the weight's (n°100–101)."""
+    u = inst.blade_u
+    if u >= math.pi / 2:
+        return (f"suspension: u = λ√(mg/EI) = {u:.4g} ≥ π/2: the inverted blade cannot hold the bob at any a > 0 "
+                "(Haag (311): mg < π²EI/(4λ²)); make the blade stiffer or shorter, or the bob lighter")
+    a1 = _critical(inst)
+    if inst.a >= a1:
+        return (f"bob.a = {inst.a:g} is not below the critical distance a1 = λ/(u tan u) = {a1:.6g} m (Haag (305), "
+                "(310)): the blade's couple does not exceed the weight's, the inverted pendulum is unstable")
+    term = inst.alpha**2 * _G_printed(inst) / 16
+    if term > MAX_AMPLITUDE_TERM:
+        return (f"amplitude = {inst.alpha:g}: θ0²G/16 = {term:.3g} near the critical distance (ε = {_epsilon(inst):.3g}), "
+                f"beyond the perturbation theory of (283) (expected ≤ {MAX_AMPLITUDE_TERM:g})")
+    return None
+
+
+def _slope_over_epsilon(rel: float, inst: Instrument, S: float) -> tuple[float, float]:
+    """d(ΔT/T)/d log g of an effect ∝ 1/ε (G of (314), (320)): ε ∝ n² to the leading order, so d log ε/d log g =
+    d log n²/d log g = −2S and d(ΔT/T)/d log g = 2S ΔT/T; its error: the next order in ε, and the effect's other
+    dependence on g (through u ∝ √g, of relative size 1/|2S|)."""
+    slope = 2 * S * rel
+    return slope, abs(slope) * (_epsilon(inst) + 1 / max(abs(2 * S), 1))
+
+
+def _inverted_symbols(inst: Instrument) -> dict[str, float]:
+    return {"a": inst.a, "R": inst.R, "lambda": inst.blade_length, "u": inst.blade_u, "g": inst.g,
+            "theta_0": inst.alpha}
+
+
+A1, G314, C317 = "haag1935.eq310.a1", "haag1935.eq314.G", "haag1935.eq317.C"
+
+
+def _isochronism_given(inst: Instrument, used: dict[str, float]) -> dict[str, float]:
+    """ε from a1 of (310) (312), then G of (314) and C of (317) as the symbols of (283)."""
+    out: dict[str, float] = {}
+    if A1 in used:
+        out["varepsilon"] = (used[A1] - inst.a) / inst.blade_length
+    if G314 in used:
+        out["G"] = used[G314]
+    if C317 in used:
+        out["C"] = used[C317]
+    return out
+
+
+def _inverted_massive(inst: Instrument) -> bool:
+    return _inverted(inst) and inst.blade_mass is not None
+
+
+def _inverted_mass_symbols(inst: Instrument) -> dict[str, float]:
+    """The symbols of (319), (320): m, m', u, λ, R (ε comes from a1 of (310))."""
+    return {"m": inst.m, "m'": inst.blade_mass, "u": inst.blade_u, "lambda": inst.blade_length, "R": inst.R}
+
+
+def _weight_estimate(inst: Instrument) -> float:
+    """(320) as printed: (m'/(8mε))(1/u² − 1/sin²u), in absolute value."""
+    u = inst.blade_u
+    return abs(inst.blade_mass / (8 * inst.m * _epsilon(inst)) * (1 / u**2 - 1 / math.sin(u) ** 2))
+
+
+MAX_WEIGHT_TERM = 0.1        # (320) at most: beyond it the weight is no perturbation (at 1/2 it overturns the bob)
+
+
+def _too_heavy(inst: Instrument) -> str | None:
+    """The blade's weight moves the critical distance by 2ε(ΔT/T) of (320): refused beyond a perturbation."""
+    term = _weight_estimate(inst)
+    if term > MAX_WEIGHT_TERM:
+        return (f"suspension.density: the blade's weight (m'/m = {inst.blade_mass / inst.m:.3g}) changes "
+                f"the period by {term:.3g} (Haag (320)), beyond a perturbation (expected ≤ {MAX_WEIGHT_TERM:g}; at 1/2 "
+                "it overturns the bob): the inverted pendulum is too close to its critical distance for this blade")
+    return None
+
+
+def _inertia_estimate(inst: Instrument) -> float:
+    """(319) as printed: (m'/m)λ²(6u − 8 sin u + sin 2u)/(8u(R²u² sin²u + λ²)), in absolute value."""
+    u, lam = inst.blade_u, inst.blade_length
+    return abs(inst.blade_mass / inst.m * lam**2 * (6 * u - 8 * math.sin(u) + math.sin(2 * u))
+               / (8 * u * (inst.R**2 * u**2 * math.sin(u) ** 2 + lam**2)))
+
+
 def _blade(inst: Instrument) -> dict[str, float]:
     return {"a": inst.a, "R": inst.R, "lambda": inst.blade_length, "u": inst.blade_u, "g": inst.g}
 
 
 def _short(inst: Instrument) -> bool:
-    return inst.kind == "blade" and inst.blade_short <= SHORT
+    return _direct(inst) and inst.blade_short <= SHORT
 
 
 def _massive(inst: Instrument) -> bool:
@@ -52,7 +168,7 @@ def effects() -> tuple[Effect, ...]:
     return (
         Effect("blade", "elastic blade instead of a knife edge (small oscillations)",
                "Haag 1935, ch. III n°50, eq. (34) with (36), (30)", "haag1935.eq034.n2_z_uniform",
-               applies=lambda i: i.kind == "blade",
+               applies=_direct,
                estimate=lambda i: math.inf,           # it defines the suspension: always kept
                symbols=_blade, relative=lambda n2, i: i.k / math.sqrt(n2) - 1,
                error=lambda rel, i: 1e-14 * abs(rel), order=5,
@@ -82,16 +198,52 @@ def effects() -> tuple[Effect, ...]:
                error=lambda rel, i: _next_order(rel, i, i.blade_mass / i.m),
                model="short uniform blade, first order in m'/m, leading order in λ/a", order=17,
                couples=("blade",)),
+        Effect("inverted_blade", "inverted blade, its slow vibration (linear theory)",
+               "Haag 1935, ch. VIII n°101 with ch. III n°50: (34), (36), (30), u → iu, g → −g",
+               "haag1935.eq034.n2_inverted", applies=_inverted, estimate=lambda i: math.inf,
+               symbols=_inverted_symbols, relative=lambda n2, i: math.pi / math.sqrt(n2) if n2 > 0 else math.nan,
+               error=lambda rel, i: 1e-14, base=True, g_exponents={"g": 1.0, "u": 0.5},
+               sensitivity=lambda slope, i: -slope / 2, refuse=_unstable, order=5,
+               model="linear theory of the inverted blade, exact for small oscillations (evaluated at 30 digits)"),
+        Effect("inverted_isochronism", "inverted blade at finite amplitude (isochronism near a1)",
+               "Haag 1935, ch. VII n°93 (283) with G of (314), C of (317) (ch. VIII n°103), ε of (312), a1 of (310)",
+               "haag1935.eq283.dT", applies=lambda i: _inverted(i) and i.alpha > 0,
+               estimate=lambda i: -i.alpha**2 * _G_printed(i) / 16, symbols=_inverted_symbols,   # C ≈ 1 (317)
+               uses=(A1, G314, C317), given=_isochronism_given, relative=lambda value, i: value,
+               # leading order in ε (G of (314) is its 1/ε term) and first order in θ0²G
+               error=lambda rel, i: abs(rel) * (_epsilon(i) + 16 * abs(rel)), replaces=("circular",),
+               couples=("inverted_blade",), order=15, g_slope=_slope_over_epsilon,
+               model="leading order in ε and first order in θ0²G (relative to the linear period on the blade)"),
+        Effect("inverted_weight", "weight of the inverted blade (its mass m')",
+               "Haag 1935, ch. VIII n°103, eq. (320), ε of (312), a1 of (310)", "haag1935.eq320.weight",
+               applies=_inverted_massive, estimate=_weight_estimate, symbols=_inverted_mass_symbols,
+               uses=(A1,), given=_isochronism_given, relative=lambda value, i: value,
+               # leading order in ε; first order in m'/(mε): the weight moves the critical distance, so that
+               # T ∝ (1 − 2ΔT/T)^(−1/2) and the next term is (3/2)(ΔT/T)²
+               error=lambda rel, i: abs(rel) * (_epsilon(i) + 2 * abs(rel)), couples=("inverted_blade",), order=16,
+               g_slope=_slope_over_epsilon, refuse=_too_heavy,
+               model="leading order in ε, first order in m'/(mε) (relative to the linear period on the blade)"),
+        Effect("inverted_inertia", "inertia of the inverted blade (its mass m')",
+               "Haag 1935, ch. VIII n°103, eq. (319)", "haag1935.eq319.inertia", applies=_inverted_massive,
+               estimate=_inertia_estimate, symbols=_inverted_mass_symbols, relative=lambda value, i: value,
+               error=lambda rel, i: abs(rel) * (_epsilon(i) + i.blade_mass / i.m), couples=("inverted_blade",),
+               order=17, model="leading order in ε, first order in m'/m (relative to the linear period on the blade)"),
     )
 
 
 def pending() -> tuple[Pending, ...]:
     """What Haag treats for a blade that scenes cannot use yet."""
-    is_blade = lambda i: i.kind == "blade"
+    is_blade = _direct
     long_blade = lambda i: is_blade(i) and i.blade_short > SHORT
     return (Pending("blade_isochronism_long", "blade at finite amplitude, λ/a > 0.1 (isochronism error)",
                     "Haag 1935, ch. II (111)–(112)", lambda i: long_blade(i) and i.alpha > 0),
             Pending("blade_clamping", "clamping errors of the blade (their angles are not in the scene)",
                     "Haag 1935, ch. II n°31–35, ch. VI n°80", is_blade),
             Pending("blade_mass", "inertia and weight of the blade (give suspension.density; λ/a ≤ 0.1)",
-                    "Haag 1935, ch. II n°36–37, ch. VI n°81", lambda i: is_blade(i) and not _massive(i)))
+                    "Haag 1935, ch. II n°36–37, ch. VI n°81", lambda i: is_blade(i) and not _massive(i)),
+            Pending("inverted_clamping", "clamping errors of the inverted blade (their angles are not in the scene)",
+                    "Haag 1935, ch. VIII n°103 (318)", _inverted),
+            Pending("inverted_mass", "inertia and weight of the inverted blade (give suspension.density)",
+                    "Haag 1935, ch. VIII n°103 (319)–(320)", lambda i: _inverted(i) and not _inverted_massive(i)),
+            Pending("inverted_temperature", "temperature coefficient of the gravity meter (not in the schema)",
+                    "Haag 1935, ch. VIII n°103 (315)", _inverted))

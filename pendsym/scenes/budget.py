@@ -51,6 +51,10 @@ class Budget:
     interaction: float
     built: int
     total: int
+    T0: float                     # the linear base's swing time (the rigid pendulum's, or a base effect's)
+    base: str                     # what the base is, for the output
+    sensitivity: float | None = None          # d log T/d log g at fixed hardware
+    sensitivity_error: float | None = None
 
     @property
     def period(self) -> float:
@@ -85,9 +89,15 @@ def instrument(sc: schema.Scene) -> Instrument:
         extra.update(support_K=sc.support.compliance, support_M=sc.support.mass)
     if sc.drift is not None:
         extra["drift_rate"] = sc.drift.rate
-    l = (a * a + bob.R**2) / a
-    k = math.sqrt(sc.g / l)
-    inst = Instrument(sus.kind, bob.mass, a, bob.R, sc.g, sc.amplitude, l, k, math.pi / k, **extra)
+    if isinstance(sus, schema.Blade) and sus.mounting == "inverted":
+        # the rigid pendulum stands above its pivot: it has no period; a base effect gives it
+        l = k = T0 = math.nan
+        extra["inverted"] = True
+    else:
+        l = (a * a + bob.R**2) / a
+        k = math.sqrt(sc.g / l)
+        T0 = math.pi / k
+    inst = Instrument(sus.kind, bob.mass, a, bob.R, sc.g, sc.amplitude, l, k, T0, **extra)
     _within_theories(inst)
     return inst
 
@@ -184,10 +194,37 @@ def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
     return dropped
 
 
+def _values(eff: Effect, inst: Instrument, built: dict[str, Result]) -> dict[str, float]:
+    """The Result's symbols at this scene: the effect's map, then what the Results it uses give (in order)."""
+    values = dict(eff.symbols(inst))
+    used: dict[str, float] = {}
+    for rid in eff.uses:
+        values.update(eff.given(inst, used) if eff.given else {})
+        used[rid] = _value(built[rid].derived_value, values, rid)
+    values.update(eff.given(inst, used) if eff.given else {})
+    return values
+
+
+def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> float:
+    """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p (symbolic derivatives, 30 digits)."""
+    out = 0.0
+    for sym in expr.free_symbols:
+        p = exponents.get(sym.name, 0)
+        if p:
+            out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / _value(expr, values, rid)
+    return out
+
+
 def solve(sc: schema.Scene) -> Budget:
     inst = instrument(sc)
     tol = sc.wanted.tolerance
-    applicable = [(e, float(e.estimate(inst))) for e in effects() if e.applies(inst)]
+    found = [e for e in effects() if e.applies(inst)]
+    for e in found:                      # outside a Result's reach (e.g. unstable): refused before any build
+        reason = e.refuse(inst) if e.refuse else None
+        if reason:
+            raise SceneError(reason)
+    replaced = {k for e in found for k in e.replaces}
+    applicable = [(e, float(e.estimate(inst))) for e in found if e.key not in replaced]
     dropped = _drop(applicable, tol)
     kept = [e for e, _ in applicable if e.key not in dropped]
     kept_keys = {e.key for e in kept}
@@ -195,19 +232,34 @@ def solve(sc: schema.Scene) -> Budget:
         if e.scale_by and e.scale_by not in kept_keys:
             raise SceneError(f"effect {e.key} is kept but {e.scale_by}, which it scales, is dropped")
     try:
-        built = build([e.result for e in kept]) if kept else {}
+        built = build([e.result for e in kept] + [u for e in kept for u in e.uses]) if kept else {}
     except registry.UnknownResult as exc:
         raise SceneError(f"a memoir's scene effect names {exc}") from None
     total = len(registry.all_specs())
     share = tol / (4 * max(1, len(kept)))
     rels: dict[str, float] = {}
     rows: list[Row] = []
+    T0, base = inst.T0, f"rigid {inst.kind} pendulum, l = (a² + R²)/a = {inst.l:.9g} m, T0 = π√(l/g)"
+    sens, sens_err, base_err = (-0.5, 0.0, 0.0) if not inst.inverted else (None, None, 0.0)
     for eff, est in applicable:
         if eff.key in dropped:
             rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, None, abs(est), "dropped",
                             f"estimated from the printed statement, below the tolerance"))
             continue
-        value = _value(built[eff.result].derived_value, dict(eff.symbols(inst)), eff.result)
+        values = _values(eff, inst, built)
+        value = _value(built[eff.result].derived_value, values, eff.result)
+        if eff.base:
+            T0 = float(eff.relative(value, inst))
+            if not (math.isfinite(T0) and T0 > 0):
+                raise SceneError(f"{eff.result} gives no real period for this scene (unstable)")
+            base_err = float(eff.error(0.0, inst))
+            base = f"{eff.title}, T0 from {eff.result}"
+            if eff.g_exponents and eff.sensitivity:
+                slope = _log_slope(built[eff.result].derived_value, values, eff.g_exponents, eff.result)
+                sens, sens_err = float(eff.sensitivity(slope, inst)), 0.0
+            rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, math.inf, base_err, "kept",
+                            f"{eff.model} ({eff.result}): the base, T0 = {T0:.12g} s"))
+            continue
         rel = float(eff.relative(value, inst))
         if eff.scale_by:
             rel *= rels[eff.scale_by]
@@ -232,7 +284,23 @@ def solve(sc: schema.Scene) -> Budget:
     factor = math.prod(1 + r for r in rels.values())
     interaction = COUPLING * sum(abs(rels[x] * rels[y]) for x, y in _unaccounted_pairs(kept, rels))
     error = sum(r.error for r in rows if r.status != "not available") + interaction
-    return Budget(sc, inst, inst.T0 * factor, error, tuple(rows), interaction, len(built), total)
+    if sens is not None:
+        # the base's sensitivity is exact for it; each kept effect adds its d(ΔT/T)/d log g when it gives it, and
+        # is bounded by 2|S||ΔT/T| when not (an effect ∝ 1/ε near a critical distance varies with g as fast as the
+        # base); a dropped effect by 2|S| × its size
+        base_sens = sens
+        for eff, _ in applicable:
+            if eff.base:
+                continue
+            if eff.key not in rels:
+                sens_err += 2 * abs(base_sens) * abs(next(r.error for r in rows if r.key == eff.key))
+            elif eff.g_slope is not None:
+                slope, slope_err = eff.g_slope(rels[eff.key], inst, base_sens)
+                sens += float(slope)
+                sens_err += float(slope_err)
+            else:
+                sens_err += 2 * abs(base_sens) * abs(rels[eff.key])
+    return Budget(sc, inst, T0 * factor, error, tuple(rows), interaction, len(built), total, T0, base, sens, sens_err)
 
 
 # ----------------------------------------------------------------- output
@@ -254,14 +322,19 @@ def text(b: Budget, name: str) -> str:
         lines.append(f"  period      {b.period:.12g} s   ± {b.error * b.period:.2g} s (relative {b.error:.2g})")
     if "swing" in q:
         lines.append(f"  swing time  {b.swing:.12g} s   ± {b.error * b.swing:.2g} s")
+    if "sensitivity" in q:
+        if b.sensitivity is None:
+            lines.append("  sensitivity not available for this base")
+        else:
+            lines.append(f"  sensitivity S = d log T/d log g = {b.sensitivity:+.6g} ± {b.sensitivity_error:.2g} "
+                         "(dT/T = S dg/g at fixed hardware)")
     if "rate" in q:
         lines.append(f"  rate        {b.rate:+.4g} s/day against {sc.wanted.target_period:g} s "
                      f"(± {b.error * SECONDS_PER_DAY:.2g} s/day)")
     verdict = "within" if b.within else "NOT within"
     lines.append(f"  estimated error {b.error:.2g} is {verdict} the tolerance {tol:g}; "
                  f"{b.built} of {b.total} Results built (the closure of the kept effects)")
-    lines.append(f"  base: rigid {b.inst.kind} pendulum, l = (a² + R²)/a = {b.inst.l:.9g} m, T0 = π√(l/g) = "
-                 f"{b.inst.T0:.12g} s")
+    lines.append(f"  base: {b.base} = {b.T0:.12g} s")
     lines.append("")
     lines.append(f"  {'effect':<58} {'ΔT/T':>12} {'error':>10}  {'status':<13} source")
     for r in b.rows:
@@ -282,8 +355,9 @@ def as_json(b: Budget, name: str) -> dict:
     return {
         "scene": name, "swing_time_s": b.swing, "period_s": b.period, "rate_s_per_day": b.rate,
         "relative_error": b.error, "tolerance": b.scene.wanted.tolerance, "within_tolerance": b.within,
-        "results_built": b.built, "results_total": b.total, "base": {"kind": b.inst.kind, "l_m": b.inst.l,
-                                                                     "T0_s": b.inst.T0},
+        "results_built": b.built, "results_total": b.total,
+        "base": {"kind": b.inst.kind, "inverted": b.inst.inverted, "l_m": num(b.inst.l), "T0_s": b.T0, "model": b.base},
+        "sensitivity": num(b.sensitivity), "sensitivity_error": num(b.sensitivity_error),
         "interaction": b.interaction,
         "budget": [{"effect": r.key, "title": r.title, "source": r.source, "result": r.result or None,
                     "estimate": num(r.estimate), "value": num(r.value), "error": num(r.error), "status": r.status,

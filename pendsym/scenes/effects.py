@@ -46,6 +46,8 @@ class Instrument:
     support_K: float | None = None
     support_M: float = 0.0
     drift_rate: float | None = None        # dl/dt, m/s
+    inverted: bool = False                 # an inverted blade (the bob above it): l, k, T0 are nan, an effect
+                                           # with ``base`` gives the linear swing time instead
 
     @property
     def mu(self) -> float:
@@ -65,7 +67,7 @@ class Instrument:
 
     @property
     def blade_short(self) -> float:
-        """λ/a, the small parameter of the short blade (Haag ch. VI)."""
+        """λ/a, the small parameter of the short blade."""
         return self.blade_length / self.a
 
     @property
@@ -105,6 +107,24 @@ class Effect:
     couples: tuple[str, ...] = ()
     model: str = "first order"           # what the Result is, for the budget's "model" line
     order: int = 50                      # the budget's row order
+    # ``base``: the Result gives the linear swing time itself (``relative(value, inst)`` returns it, in s), in
+    # place of the rigid pendulum's π√(l/g) (e.g. an inverted pendulum, unstable without its suspension)
+    base: bool = False
+    # the base's dependence on g at fixed hardware: each symbol's exponent of g (a symbol ∝ g^p), and the map
+    # from d log(value)/d log g to d log T/d log g (the sensitivity a gravity meter's user wants)
+    g_exponents: Mapping[str, float] | None = None
+    sensitivity: Callable[[float, Instrument], float] | None = None
+    # d(ΔT/T)/d log g of this effect and its error, from (ΔT/T, inst, the base's S); without it the budget bounds
+    # the effect's part of the sensitivity by 2|S||ΔT/T| (an effect ∝ 1/ε near a critical distance)
+    g_slope: Callable[[float, Instrument, float], tuple[float, float]] | None = None
+    # keys of effects this one supersedes for this hardware (they are not applied when it applies)
+    replaces: tuple[str, ...] = ()
+    # Results whose values (at ``symbols`` and what ``given`` returns so far, in order) feed this Result's
+    # symbols through ``given(inst, {id: value})``
+    uses: tuple[str, ...] = ()
+    given: Callable[[Instrument, Mapping[str, float]], Mapping[str, float]] | None = None
+    # a one-line reason to refuse the scene (outside the Result's reach, e.g. unstable), or None
+    refuse: Callable[[Instrument], str | None] | None = None
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r
            "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
 
 
-DECLARED = "ΔαδλμεπΓ²−–—≤"     # the characters the page's preamble declares
+DECLARED = "ΔαδλμεπΓ²−–—≤√→"     # the characters the page's preamble declares
 
 
 def escape(text: str) -> str:
@@ -46,7 +46,7 @@ def tex(b: Budget, name: str) -> str:
     rows, bars, labels = [], [], []
     for r in b.rows:
         size = r.value if r.status == "kept" else (r.estimate if r.status == "dropped" else None)
-        val = "--" if size is None else _num(size)
+        val = "--" if size is None else ("(the base)" if math.isinf(size) else _num(size))
         err = "?" if math.isnan(r.error) else _num(r.error)
         rows.append(f"{escape(r.title)} & {escape(r.source)} & {val} & {err} & {r.status} \\\\")
         if size is not None and size != 0 and math.isfinite(size):
@@ -58,6 +58,8 @@ def tex(b: Budget, name: str) -> str:
     err_coords = " ".join(f"({e:.6e},{i})" for i, _, e in bars if e)
     answer = [f"Period: {b.period:.12g} s $\\pm$ {b.error * b.period:.2g} s (relative {b.error:.2g})",
               f"Swing time: {b.swing:.12g} s"]
+    if b.sensitivity is not None and "sensitivity" in sc.wanted.quantities:
+        answer.append(f"Sensitivity $d\\log T/d\\log g$: {b.sensitivity:+.6g} $\\pm$ {b.sensitivity_error:.2g}")
     if b.rate is not None:
         answer.append(f"Rate: {b.rate:+.4g} s/day against {sc.wanted.target_period:g} s "
                       f"($\\pm$ {b.error * SECONDS_PER_DAY:.2g} s/day)")
@@ -104,13 +106,15 @@ def tex(b: Budget, name: str) -> str:
 \DeclareUnicodeCharacter{{03B5}}{{$\varepsilon$}}
 \DeclareUnicodeCharacter{{03C0}}{{$\pi$}}
 \DeclareUnicodeCharacter{{0393}}{{$\Gamma$}}
+\DeclareUnicodeCharacter{{221A}}{{$\surd$}}
+\DeclareUnicodeCharacter{{2192}}{{$\to$}}
 \pagestyle{{empty}}
 \begin{{document}}
 \section*{{{escape(name)}}}
 {answer_tex}
 
 \medskip
-Base: rigid {escape(b.inst.kind)} pendulum, $l = (a^2 + R^2)/a$ = {b.inst.l:.9g} m, $T_0 = \pi\sqrt{{l/g}}$ = {b.inst.T0:.12g} s.
+Base: {escape(b.base)} = {b.T0:.12g} s.
 
 \medskip
 {{\small

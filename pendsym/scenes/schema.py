@@ -68,8 +68,9 @@ class Drift(Strict):
 
 
 class Wanted(Strict):
-    quantities: list[Literal["period", "swing", "rate"]] = Field(["period"], min_length=1, max_length=3,
-                                                                 description="what to report")
+    quantities: list[Literal["period", "swing", "rate", "sensitivity"]] = Field(
+        ["period"], min_length=1, max_length=4,
+        description="what to report (sensitivity: d log T/d log g, dT/T per dg/g at fixed hardware)")
     tolerance: float = num(1e-15, 1e-1, "1", "relative tolerance on the period")
     target_period: float | None = num(1e-3, 1e4, "s", "the period the instrument is meant to have (for "
                                       "the rate in s/day)", default=None)
@@ -99,8 +100,11 @@ class Scene(Strict):
             raise ValueError(f"bob.a: required with a {sus.kind} suspension (the distance from the pivot to "
                              "the centre of mass, m)")
         if isinstance(sus, Blade) and sus.mounting == "inverted":
-            raise ValueError("suspension.mounting = 'inverted': no Result of the engine treats the inverted "
-                             "blade yet (expected 'direct')")
+            for key, given in (("support", self.support), ("drift", self.drift)):
+                if given is not None:
+                    raise ValueError(f"{key} is given with an inverted blade: no Result of the engine treats the "
+                                     f"inverted blade with a {'compliant support' if key == 'support' else 'length drift'}"
+                                     f" (remove {key})")
         if isinstance(sus, Blade) and sus.thickness >= sus.width:
             raise ValueError(f"suspension.thickness = {sus.thickness:g} is not smaller than suspension.width = "
                              f"{sus.width:g}: not a blade")

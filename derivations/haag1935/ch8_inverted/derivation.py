@@ -159,3 +159,23 @@ def inequality_308(deps) -> sp.Expr:
 def distance_312(_deps) -> sp.Expr:
     """(312): a1 − a = ελ (definition of ε for the inverted blade, (305))."""
     return eps * lam
+
+
+# ---------------------------------------------------------------- n°101: the period of the inverted uniform blade
+def n2_inverted(deps) -> sp.Expr:
+    """n°101 applied to n°50: n² of the vibration whose node is z' (the slow one near a1), inverted uniform blade.
+
+    (34) n² = −Kg/z' with g → −g (n°100), z' = −R²/z (31), K of (36) and z the positive root of (30) (n°7), with
+    vλ, β1, wλ of (159) turned by u → iu (n°101, as (307), (313)): n² = −Kgz/R²."""
+    from pendsym.roots import quadratic_roots
+    from ..symbols import K, R, beta1, g, vl, wl, z, zp
+    ends = {name: rotated(derived_of(deps, 159, str_name))
+            for name, str_name in ((vl, "vl"), (beta1, "beta1"), (wl, "wl"))}
+    coeffs = [sp.simplify(c.subs(ends)) for c in ch1_model.foci_quadratic().all_coeffs()]
+    plus, _minus = quadratic_roots(sp.Poly(sum(c * z**k for k, c in zip((2, 1, 0), coeffs)), z))
+    product, _sum = ch1_model.vieta()
+    if sp.simplify(product + R**2) != 0:
+        raise ValueError("the product of the foci is not −R² (31)")
+    K_36 = ch1_model.K_of_z().subs(ends)
+    n2 = (-K * g / zp).subs(g, -g).subs(zp, product / z)
+    return n2.subs(K, K_36).subs(z, plus)

@@ -119,6 +119,13 @@ def specs() -> tuple[Spec, ...]:
              check=along_blade("the bending stress E(e/2)φ'", "stress", "u=1", sign=-1),
              note="Printed as an instruction ('remplacer ch ωs par cos ωs [OCR: ch read cos] et sh u par sin u'); "
                   "the transcription applies it to (280)."),
+        Spec(rid(34, "n2_inverted"), "n² = −Kgz/R² of the inverted uniform blade ((34), (36), (30), u → iu, g → −g)",
+             src(101, None), "n^2", derivation.n2_inverted, deps=(rid(159, "vl"), rid(159, "beta1"), rid(159, "wl")),
+             check=truth.n2_check(),
+             note="Not printed: n°101's rule (chapter III's formulas hold with u → iu, and g → −g, n°100) applied to "
+                  "(34) n² = −Kg/z', (36) K and (30) z of n°50, as the scenes need it (the period of an inverted-blade "
+                  "gravity meter).  It is the mode whose node is z' < 0: near a1 the slow one; n² is proportional to "
+                  "a1 − a (310)."),
         Spec(rid(317, "C"), "C = (3/8)(4u − sin 4u)/(sin²u(2u + sin 2u)), inverted", src(103, "317"), "C",
              derivation.C_317, printed=printed.C, check=C_values(-1),
              note="Derived from dsolve with M < 0 (circular functions), not by u → iu."),

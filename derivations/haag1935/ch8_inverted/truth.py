@@ -289,3 +289,35 @@ class PositiveIffStable:
         return Evidence(kind="inequality", passed=bool(ok),
                         truth=f"{truth.MODEL}: the sign of β1 = 1/S00 of the direct inverted uniform blade at u "
                               f"{', '.join(SIGN_U)}", note="; ".join(notes))
+
+
+# ---------------------------------------------------------------- n°101 with n°50: the period (for the scenes)
+N2_BLADES = ("u=1/2", "u=1", "u=3/2")          # inside the window (0, π/2) where a > 0 is possible (311)
+N2_OFFSETS = ("-0.01", "-0.2")                 # a − a1 (m): near the critical distance and far below it
+
+
+def node_mode_n2(key: str, offset: str, dps: int = 30) -> tuple:
+    """(a, n²) of the mode whose node is z' < 0 (the upper one of the two, zz' = −R²) of the eigenproblem
+    K q = n² 𝕄 q of the rigid pendulum on the directly solved inverted blade ``key`` (g < 0), a = a1 + offset."""
+    sus = truth.direct(key, SIGN, 0, dps)
+    with mp.workdps(sus.wdps):
+        env = truth.numbers(key, SIGN, dps)        # g, R read at the working precision
+        a = env["a_1"] + mp.mpf(offset)
+        modes = sorted(truth.eigenmodes(sus, a, env["R"], env["g"]), key=lambda pair: pair[1])
+        return a, modes[0][0]
+
+
+def n2_check() -> checks.Values:
+    """n² of the derived form against the eigenvalue of the truth's mode with node z' (both vibrations exist:
+    a < a1, β1 < 0)."""
+    def points(level, dps):
+        for k in N2_BLADES:
+            for offset in N2_OFFSETS:
+                a, n2 = node_mode_n2(k, offset, dps)
+                yield checks.Point(f"{k}, a − a1 = {offset}", {"u": suspension.number(sp.Rational(k[2:])),
+                                                                 "lambda": suspension.number(truth.LAMBDA), "a": a,
+                                                                 "R": mp.mpf(truth.R_VALUE),
+                                                                 "g": mp.mpf(truth.G_VALUE)}, n2)
+    return checks.Values(truth=f"{truth.MODEL}; g < 0, M = −(λ/u)², λ = 1/10, R = {truth.R_VALUE}; the eigenvalue of "
+                               "the mode whose node is above G (z' < 0)", points=points,
+                         confirm=lambda dps: {"n2": node_mode_n2(N2_BLADES[0], N2_OFFSETS[0], dps)[1]})
