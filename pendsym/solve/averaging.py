@@ -7,10 +7,13 @@ With θ = a cos kt + b sin kt and θ' = k(−a sin kt + b cos kt) (variation of 
 
 The slow flow keeps the part of the right-hand sides that does not oscillate: written with
 exponentials, the terms e^{iwt} whose frequency w vanishes with the small parameter (w = 0 at
-exact resonance, w = O(ε) near it, which then stays in the slow flow as a slow phase).  A
-perturbation with abs or sign (dry friction, quadratic drag) is averaged in the polar form
-θ = r cos(kt + β):  r' = ⟨φ sin ψ⟩/k,  β' = ⟨φ cos ψ⟩/(kr), ψ = kt + β, the mean over ψ taken
-on quarter periods where every abs and sign argument keeps its sign.
+exact resonance, w = O(ε) near it, which then stays in the slow flow as a slow phase).  An
+autonomous perturbation (damping, quadratic drag, dry friction, a nonlinear stiffness) is
+averaged in the polar form θ = r cos(kt + β):  r' = ⟨φ sin ψ⟩/k,  β' = ⟨φ cos ψ⟩/(kr),
+ψ = kt + β, the mean over ψ taken on quarter periods where every abs and sign argument keeps
+its sign.  Its amplitude equation r' = f(r) is then solved by SymPy's dsolve for the amplitude
+law r(t) (:func:`amplitude_law`), and one swing (a time π/k) changes the amplitude by
+(π/k) f(r) to first order.
 """
 from __future__ import annotations
 
@@ -97,9 +100,9 @@ def slow_flow(problem: Problem) -> SlowFlow:
     if poly is None or any(c.has(problem.theta, problem.dtheta) for c in poly.coeffs()):
         raise NotAveraged("averaging is implemented for a perturbation polynomial in the variable and its "
                           "velocity (abs and sign allowed when autonomous)")
-    if phi.has(sp.Abs, sp.sign):
-        if not problem.autonomous:
-            raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
+    if phi.has(sp.Abs, sp.sign) and not problem.autonomous:
+        raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
+    if problem.autonomous:
         on = phi.subs({problem.theta: r_ * sp.cos(psi_), problem.dtheta: -r_ * k * sp.sin(psi_)},
                       simultaneous=True)
         num = problem.values()
@@ -112,6 +115,24 @@ def slow_flow(problem: Problem) -> SlowFlow:
     da = _slow_part(on * sp.sin(k * t) / k, problem)
     db = _slow_part(-on * sp.cos(k * t) / k, problem)
     return SlowFlow("cartesian", (a_, b_), (da, db), theta, (a0, b0))
+
+
+def amplitude_law(problem: Problem, flow: SlowFlow) -> sp.Expr | None:
+    """r(t) solving the averaged amplitude equation r' = f(r) from r(0) (SymPy's dsolve), or None
+    when the flow is not polar, f depends on more than r, or dsolve gives no single explicit law."""
+    if flow.form != "polar" or flow.rates[0].has(beta_, problem.t):
+        return None
+    t = problem.t
+    rf, r0 = sp.Function("r"), sp.Symbol("r0", positive=True)
+    try:
+        sol = sp.dsolve(sp.Eq(rf(t).diff(t), flow.rates[0].subs(r_, rf(t))), rf(t), ics={rf(t).subs(t, 0): r0})
+    except (NotImplementedError, ValueError, TypeError):
+        return None
+    if isinstance(sol, list) or sol.rhs.has(rf) or sol.rhs.has(sp.Integral):
+        return None
+    law = sp.simplify(sol.rhs.subs(r0, flow.start[0]))
+    ok = sp.simplify(sp.diff(law, t) - flow.rates[0].subs(r_, law))       # r' = f(r) holds
+    return law if ok == 0 and sp.simplify(law.subs(t, 0) - flow.start[0]) == 0 else None
 
 
 def integrate(problem: Problem, flow: SlowFlow, eps, times, dps: int) -> list:

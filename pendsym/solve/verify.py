@@ -42,22 +42,29 @@ def unperturbed_period(problem: Problem) -> mp.mpf:
     return 2 * mp.pi / engine.value_at(problem.k.subs(problem.values()), {})
 
 
-def turning_times(problem: Problem, traj: model.Trajectory, count: int) -> list:
-    """The first ``count`` times t > 0 with θ'(t) = 0 (a start at rest at t = 0 is not counted)."""
+def turning_times(problem: Problem, traj: model.Trajectory, count: int, periods: int = MAX_PERIODS) -> list:
+    """The first ``count`` times t > 0 with θ'(t) = 0 (a start at rest at t = 0 is not counted),
+    searched within ``periods`` unperturbed periods.  ``traj`` is a dense solution (a
+    :class:`pendsym.truth.Trajectory` or a piecewise one from :mod:`pendsym.solve.kinks`)."""
     with mp.workdps(traj.dps):
         step = unperturbed_period(problem) / SCAN
         found, t_prev = [], step / 1000
         v_prev = traj(t_prev)[1]
-        for i in range(1, SCAN * MAX_PERIODS):
+        for i in range(1, SCAN * periods):
             t_next = step * i
             v_next = traj(t_next)[1]
             if v_next == 0 or v_prev * v_next < 0:
-                root = mp.findroot(lambda s: traj.solve(s)[1], (t_prev, t_next), solver="anderson")
+                root = mp.findroot(lambda s: traj(s)[1], (t_prev, t_next), solver="anderson")
                 found.append(root)
                 if len(found) == count:
                     return found
             t_prev, v_prev = t_next, v_next
     raise ValueError("the motion does not turn back within the scanned time (not oscillating)")
+
+
+def turning_times_until(problem: Problem, traj, count: int) -> list:
+    """The first ``count`` turning times, searched within count/2 + 4 unperturbed periods."""
+    return turning_times(problem, traj, count, periods=count // 2 + 4)
 
 
 def frequency_truth(problem: Problem) -> Callable:
