@@ -14,9 +14,10 @@ as a chain of smooth pieces:
    dense solution at a fixed fraction of the unperturbed period, refined by a bracketing root
    finder (Anderson–Björk), and the next piece starts from the state there.
 
-Nothing in this uses a perturbation formula.  A piece that starts where g_i and its rate
-both vanish (a sticking point of dry friction) is refused: the motion there is not decided
-by the equation as written.
+Nothing in this uses a perturbation formula.  A piece that starts on a kink it cannot leave
+on the side its rate points to (a sticking point of dry friction: with sign(θ') = σ the
+acceleration points back) is refused: the motion there is not decided by the equation as
+written.
 """
 from __future__ import annotations
 
@@ -113,6 +114,12 @@ def integrate(problem: Problem, eps, dps: int, t_end) -> Piecewise:
                 signs.append(1 if rate > 0 else -1)
             signs = tuple(signs)
             f = accel(signs)
+            for i, s in enumerate(signs):      # leaving the kink on the chosen side must be consistent
+                if abs(g_f[i](t0, *y)) <= tiny:
+                    rate = dg_f[i](t0, *y) * y[1] + dgv_f[i](t0, *y) * f(t0, *y) + dgt_f[i](t0, *y)
+                    if s * rate <= 0:
+                        raise NotIntegrable(f"the motion cannot leave {sp.sstr(args[i])} = 0 on either side at "
+                                            f"t = {mp.nstr(t0, 8)} (sticking): the equation does not decide it")
             traj = model.integrate(lambda s, u, f=f: [u[1], f(s, u[0], u[1])], y, dps=dps, t0=t0)
             starts.append(t0)
             pieces.append(traj)
