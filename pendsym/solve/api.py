@@ -21,8 +21,9 @@ from pathlib import Path
 import mpmath as mp
 import sympy as sp
 
+from .. import verify as engine
 from ..result import Evidence
-from . import averaging, frequency, kinks, lindstedt, secular, variation
+from . import averaging, averaging2, frequency, kinks, lindstedt, secular, variation
 from . import verify as truth
 from .problem import Problem, ProblemError, from_dict, load
 
@@ -79,6 +80,58 @@ def _frequency(problem: Problem, sol: Solution, check: bool) -> None:
 
 
 def _slow(problem: Problem, sol: Solution, check: bool) -> None:
+    """The first-order slow flow, and the second-order one when the order asked is 2 or more."""
+    _slow1(problem, sol, check)
+    if problem.order < 2:
+        return
+    try:
+        _slow2(problem, sol, check)
+    except averaging.NotAveraged as exc:
+        sol.notes.append(f"order {problem.order} asked; the slow flow is first order only: {exc}")
+        return
+    sol.method = sol.method.replace("averaging (first order)", "averaging (first and second order)")
+    if problem.order > 2:
+        sol.notes.append(f"order {problem.order} asked; averaging is done to second order")
+
+
+def _slow2(problem: Problem, sol: Solution, check: bool) -> None:
+    flow = averaging2.slow_flow2(problem)
+    names = [f"d{v.name}/dt (second order)" for v in flow.variables]
+    tn = problem.t.name
+    sol.answers += [Answer(n, r) for n, r in zip(names, flow.rates)]
+    sol.answers += [Answer(f"u1_{v.name}(a, b, {tn}), x = z + {problem.small.name}*u1", g)
+                    for v, g in zip(flow.variables, flow.generator)]
+    sol.answers += [Answer(f"{v.name}(0) of the slow flow", s) for v, s in zip(flow.variables, flow.start)]
+    if not check:
+        return
+    lo, hi = problem.slow_range
+    period = truth.unperturbed_period(problem)
+    kval = engine.value_at(problem.k.subs(problem.values()), {})
+
+    def times(eps):    # one unperturbed period from t = 1/ε: the mean distance over it does not
+        return [1 / mp.mpf(eps) + period * j / 8 for j in range(8)]   # hang on one phase of ε²u2
+
+    def state(eps, dps):
+        traj = truth.trajectory(problem, eps, dps)
+        out = []
+        with mp.workdps(dps):
+            for s in times(eps):
+                th, dth = traj(s)
+                c, n = mp.cos(kval * s), mp.sin(kval * s)
+                out.append((th * c - dth / kval * n, th * n + dth / kval * c))
+        return out
+
+    ev = truth.fitted_distance(
+        problem, truth=state, answer=lambda eps: averaging2.integrate(problem, flow, eps, times(eps), mp.mp.dps),
+        expected=2, lo=lo, hi=hi,
+        what="the distance |(a, b) − (a, b)_averaged|, its mean over the unperturbed period from t = 1/ε, "
+             "(a, b) = (θ cos kt − (θ'/k) sin kt, θ sin kt + (θ'/k) cos kt) the variation-of-constants "
+             "coordinates of the motion, against z + εu1(z, t) with z the second-order slow flow integrated "
+             "from z(0) (error O(ε²) over times O(1/ε))")
+    sol.answers[-len(flow.start) - len(flow.generator) - 2] = Answer(names[0], flow.rates[0], ev)
+
+
+def _slow1(problem: Problem, sol: Solution, check: bool) -> None:
     flow = averaging.slow_flow(problem)
     for v, r in zip(flow.variables, flow.rates):
         sol.answers.append(Answer(f"d{v.name}/dt", r))
@@ -171,13 +224,13 @@ def _desc(problem: Problem, kinked: bool) -> str:
 
 def _swing(problem: Problem, sol: Solution, check: bool) -> None:
     n = 1
-    if problem.order > 1 and problem.autonomous and not problem.phi.has(sp.Abs, sp.sign):
+    if problem.order > 1 and not problem.phi.has(sp.Abs, sp.sign):
         n = problem.order
         sw = variation.swing_to_order(problem, n)
     else:
         if problem.order > 1:
             sol.notes.append(f"order {problem.order} asked; the per-swing expansion is first order for a "
-                             "perturbation with abs, sign or an explicit time dependence")
+                             "perturbation with abs or sign")
         sw = variation.first_swing(problem)
     ev_t = ev_a = None
     if check:
@@ -216,8 +269,6 @@ def solve(problem, *, verify: bool = True) -> Solution:
                 raise ProblemError(f"Lindstedt–Poincaré does not apply: {exc}") from None
             sol.notes.append(f"Lindstedt–Poincaré does not apply: {exc}")
             sol.method = "averaging (first order) and variation of constants (one swing from rest)"
-            if problem.order > 1:
-                sol.notes.append(f"order {problem.order} asked; the slow flow is first order")
             _slow(problem, sol, verify)
             if problem.omega_i == 0:
                 _swing(problem, sol, verify)

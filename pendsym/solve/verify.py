@@ -16,6 +16,7 @@ import sympy as sp
 
 from .. import truth as model
 from .. import verify as engine
+from ..result import Evidence
 from .problem import Problem
 
 SCAN = 24            # steps per unperturbed period in the turning-point scan
@@ -112,3 +113,41 @@ def fitted(problem: Problem, *, truth: Callable, answer: Callable, expected: flo
     return engine.order_check(param=problem.small.name, values=values, truth=truth, derived=answer,
                               expected=expected, band=band, truth_desc=desc, params=params,
                               dps=problem.dps, confirm_dps=problem.dps + 15, note=what)
+
+
+def fitted_distance(problem: Problem, *, truth: Callable, answer: Callable, expected: float, what: str,
+                    band: float = 0.35, lo=None, hi=None):
+    """Evidence of the fitted order of the distance |x_truth − x_answer| between two states (tuples),
+    in the small parameter over a geometric sequence: a residual that is a Euclidean norm does not
+    change sign, so the fit is not spoiled by a component crossing zero.  The truth at the smallest
+    parameter is recomputed at dps + 15 digits and must resolve the smallest distance (as in
+    :func:`pendsym.verify.order_check`)."""
+    lo = lo or problem.slow_range[0]
+    hi = hi or problem.slow_range[1]
+    values = engine.geometric(lo, hi, problem.points)
+    dps, confirm_dps = problem.dps, problem.dps + 15
+
+    def dist(us, vs):      # the mean over the sampled states of the Euclidean distance
+        return sum(mp.sqrt(sum((x - y) ** 2 for x, y in zip(u, v))) for u, v in zip(us, vs)) / len(us)
+    with mp.workdps(dps):
+        truths = [truth(p, dps) for p in values]
+        res = [dist(tr, answer(p)) for p, tr in zip(values, truths)]
+    with mp.workdps(confirm_dps):
+        confirm = dist(truth(values[0], confirm_dps), truths[0])
+    norm0 = mp.sqrt(sum(x**2 for x in truths[0][0]))
+    digits = 45.0 if confirm == 0 else float(-mp.log10(confirm / norm0))
+    exact = max(res) < norm0 * mp.mpf(10) ** (-(dps - 5))
+    slope = engine.fit_order(values, res) if all(r != 0 for r in res) else float("inf")
+    resolved = confirm < res[0] * mp.mpf("1e-3")
+    if exact:      # the answer agrees with the truth to the working precision at every point
+        what += f" | exact: the distance is under 1e-{dps - 5} of the state at every point (rounding level)"
+    params = tuple((s.name, v) for s, v in sorted(problem.parameters.items(), key=lambda kv: kv[0].name))
+    return Evidence(
+        kind="order", passed=bool(exact or (abs(slope - expected) <= band and resolved)),
+        truth=(f"the problem's own equation integrated by mpmath odefun at {dps} digits, confirmed at "
+               f"{confirm_dps}"),
+        max_residual=engine.rounded(max(res)), order=engine.rounded(slope), expected_order=float(expected),
+        band=(expected - band, expected + band), param=problem.small.name, params=params,
+        series=tuple((engine.rounded(p), engine.rounded(r)) for p, r in zip(values, res)),
+        confirm_digits=engine.rounded(digits),
+        note=what + ("" if resolved else " | truth not resolved at two precisions"))
