@@ -77,10 +77,16 @@ def _diff(p: Modes, s: sp.Symbol) -> Modes:
     return {w: c for w, c in ((w, sp.diff(c, s)) for w, c in p.items()) if c != 0}
 
 
-def _real(p: Modes, t: sp.Symbol) -> sp.Expr:
-    """Σ c_w e^{iwt} written with cos and sin (real when p is the modes of a real function)."""
-    total = sum((c * sp.exp(sp.I * w * t) for w, c in p.items()), sp.S.Zero)
-    return sp.simplify(sp.expand(sp.expand_complex(total.rewrite(sp.cos))))
+def _real(p: Modes, t: sp.Symbol, vals: dict) -> sp.Expr:
+    """Σ c_w e^{iwt} as Σ (c_w + c_−w) cos wt + i(c_w − c_−w) sin wt over w > 0 (w's sign taken at the
+    parameters' values ``vals``): real when p holds the modes of a real function."""
+    out = sp.expand(p.get(0, 0))
+    for w, c in p.items():
+        if w == 0 or sp.N(w.subs(vals)) < 0:
+            continue
+        cm = p.get(sp.expand(-w), 0)
+        out += sp.expand(c + cm) * sp.cos(w * t) + sp.expand(sp.I * (c - cm)) * sp.sin(w * t)
+    return out
 
 
 def _check_frequencies(p: Modes, problem: Problem) -> None:
@@ -124,7 +130,7 @@ def slow_flow2(problem: Problem) -> SlowFlow2:
             corr[w] = sp.expand(corr.get(w, 0) + c)
         second = sp.expand(F[1][i].get(0, 0) + corr.get(0, 0))
         rates.append(sp.simplify(sp.expand_complex(eps * F[0][i].get(0, 0) + eps**2 * second)))
-    gen = tuple(_real(u, t) for u in u1)
+    gen = tuple(_real(u, t, problem.values()) for u in u1)
     a0, b0 = problem.theta_i, problem.omega_i / k
     start = tuple(sp.expand(x0 - eps * g.subs({a_: a0, b_: b0, t: 0}, simultaneous=True)) for x0, g in zip((a0, b0), gen))
     return SlowFlow2(tuple(rates), gen, start)
