@@ -88,18 +88,70 @@ def _mean_piecewise(f: sp.Expr, psi: sp.Symbol, num: dict) -> sp.Expr:
     return sp.simplify(total / (2 * sp.pi))
 
 
+def _monomial_mean(expr: sp.Expr, problem: Problem, weight: str):
+    """⟨φ w⟩ over ψ ∈ [0, 2π] along θ = r cos ψ, θ' = −rk sin ψ (w = sin ψ or cos ψ), in closed form, when
+    φ is a sum of generalized monomials c θ^i θ'^j |θ|^p |θ'|^q sign(θ)^m sign(θ')^n (p, q any real
+    powers: power-law damping, Coulomb friction, |θ|θ).  Each is ±r^… |cos ψ|^α |sin ψ|^β sgn(cos ψ)^μ
+    sgn(sin ψ)^ν, whose mean is 0 when μ or ν is odd (the four quarters cancel) and otherwise
+    B((α+1)/2, (β+1)/2)/π (the Wallis–Beta integral ∫_0^{π/2} cos^α sin^β = B((α+1)/2, (β+1)/2)/2 on
+    each quarter).  None when φ is not of that form."""
+    th, dth, k = problem.theta, problem.dtheta, problem.k
+    total = sp.S.Zero
+    for term in sp.Add.make_args(sp.expand(expr)):
+        coeff = sp.S.One
+        al, be, mu, nu = sp.S.Zero, sp.S.Zero, 0, 0      # |cos|^al |sin|^be sgn(cos)^mu sgn(sin)^nu
+        scale = sp.S.One                                   # powers of r and k, and signs
+        for fac in sp.Mul.make_args(term):
+            base, pw = fac.as_base_exp()
+            if not fac.has(th, dth):
+                coeff *= fac
+                continue
+            if base == th and pw.is_integer:
+                al, mu, scale = al + pw, mu + pw, scale * r_**pw
+            elif base == dth and pw.is_integer:
+                be, nu, scale = be + pw, nu + pw, scale * (-r_ * k)**pw
+            elif base == sp.Abs(th) and pw.is_real:
+                al, scale = al + pw, scale * r_**pw
+            elif base == sp.Abs(dth) and pw.is_real:
+                be, scale = be + pw, scale * (r_ * k)**pw
+            elif base == sp.sign(th) and pw.is_integer:
+                mu += pw
+            elif base == sp.sign(dth) and pw.is_integer:
+                nu, scale = nu + pw, scale * (-1)**pw
+            else:
+                return None
+        if weight == "sin":
+            be, nu = be + 1, nu + 1
+        else:
+            al, mu = al + 1, mu + 1
+        if not (al.is_number and be.is_number) or al <= -1 or be <= -1:
+            return None
+        if int(mu) % 2 or int(nu) % 2:
+            continue
+        total += coeff * scale * sp.gamma((al + 1) / 2) * sp.gamma((be + 1) / 2) / (sp.pi * sp.gamma((al + be + 2) / 2))
+    return sp.simplify(total)
+
+
 def slow_flow(problem: Problem) -> SlowFlow:
     """The averaged equations of the problem (first order in the small parameter)."""
     t, k, phi = problem.t, problem.k, problem.phi
     a0, b0 = problem.theta_i, problem.omega_i / k
+    if problem.autonomous:
+        dr = _monomial_mean(phi / k, problem, "sin")
+        dbeta = _monomial_mean(phi / (k * r_), problem, "cos")
+        if dr is not None and dbeta is not None:
+            return SlowFlow("polar", (r_, beta_), (dr, dbeta), r_ * sp.cos(k * t + beta_),
+                            (sp.sqrt(a0**2 + b0**2), sp.atan2(-b0, a0)))
     kinks = {atom: sp.Dummy() for atom in phi.atoms(sp.Abs, sp.sign)}
     try:
         poly = sp.Poly(phi.xreplace(kinks), problem.theta, problem.dtheta)
     except sp.PolynomialError:
         poly = None
     if poly is None or any(c.has(problem.theta, problem.dtheta) for c in poly.coeffs()):
-        raise NotAveraged("averaging is implemented for a perturbation polynomial in the variable and its "
-                          "velocity (abs and sign allowed when autonomous)")
+        raise NotAveraged("averaging is done for φ polynomial in the variable and its velocity (abs and sign of "
+                          "any expression allowed when autonomous), or a sum of terms θ^i θ'^j |θ|^p |θ'|^q "
+                          "sign(θ)^m sign(θ')^n with any real p, q; for another φ make the small parameter the "
+                          "amplitude (Lindstedt–Poincaré expands it)")
     if phi.has(sp.Abs, sp.sign) and not problem.autonomous:
         raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
     if problem.autonomous:
@@ -128,11 +180,14 @@ def amplitude_law(problem: Problem, flow: SlowFlow) -> sp.Expr | None:
         sol = sp.dsolve(sp.Eq(rf(t).diff(t), flow.rates[0].subs(r_, rf(t))), rf(t), ics={rf(t).subs(t, 0): r0})
     except (NotImplementedError, ValueError, TypeError):
         return None
-    if isinstance(sol, list) or sol.rhs.has(rf) or sol.rhs.has(sp.Integral):
-        return None
-    law = sp.simplify(sol.rhs.subs(r0, flow.start[0]))
-    ok = sp.simplify(sp.diff(law, t) - flow.rates[0].subs(r_, law))       # r' = f(r) holds
-    return law if ok == 0 and sp.simplify(law.subs(t, 0) - flow.start[0]) == 0 else None
+    for cand in (sol if isinstance(sol, list) else [sol]):       # the one solution that is r(t) from r(0)
+        if cand.rhs.has(rf) or cand.rhs.has(sp.Integral):
+            continue
+        law = sp.simplify(cand.rhs.subs(r0, flow.start[0]))
+        ok = sp.simplify(sp.diff(law, t) - flow.rates[0].subs(r_, law))       # r' = f(r) holds
+        if ok == 0 and sp.simplify(law.subs(t, 0) - flow.start[0]) == 0:
+            return law
+    return None
 
 
 def integrate(problem: Problem, flow: SlowFlow, eps, times, dps: int) -> list:

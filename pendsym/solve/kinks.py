@@ -53,6 +53,23 @@ def smooth_part(phi: sp.Expr, args: list, signs: tuple) -> sp.Expr:
     return phi.xreplace(rep)
 
 
+def _corners(n: int) -> list:
+    out = [()]
+    for _ in range(n):
+        out = [c + (s,) for c in out for s in (1, -1)]
+    return out
+
+
+def _require_analytic(expr: sp.Expr, args: list) -> None:
+    """Refuse a piece that is not analytic where it starts: a non-integer power of an expression that
+    vanishes at the kink (|θ'|^{1/2}: the Taylor solver cannot start a piece at θ' = 0)."""
+    for pw in expr.atoms(sp.Pow):
+        base, ex = pw.as_base_exp()
+        if not ex.is_integer and any(base.has(*g.free_symbols) for g in args if g.free_symbols):
+            raise NotIntegrable(f"the equation is not analytic at its kinks ({sp.sstr(pw)}): the Taylor integrator "
+                                f"cannot start a piece there, so it is not integrated")
+
+
 @dataclass(frozen=True)
 class Piecewise:
     """A dense solution made of smooth pieces: starts[i] is where pieces[i] begins."""
@@ -80,6 +97,8 @@ def integrate(problem: Problem, eps, dps: int, t_end) -> Piecewise:
     k2 = (problem.k**2).subs(vals)
     phi = problem.phi.subs(vals)
     args = kink_arguments(phi)
+    for s in _corners(len(args)):
+        _require_analytic(smooth_part(phi, args, s), args)
     g_f = [engine.lambdify_mp(g, (t, th, dth)) for g in args]
     dg_f = [engine.lambdify_mp(sp.diff(g, th), (t, th, dth)) for g in args]
     dgv_f = [engine.lambdify_mp(sp.diff(g, dth), (t, th, dth)) for g in args]
