@@ -7,11 +7,14 @@
 
 The method follows the problem: Lindstedt–Poincaré for an autonomous polynomial φ (the
 frequency, period and motion to the order wanted); for a resonant time dependence one line
-says so and the slow flow by averaging is returned (no per-swing answer); otherwise the
-first-order per-swing changes by variation of constants, with the slow flow for an
-autonomous φ that changes the amplitude.  Every answer carries the evidence of its fitted
-order against the problem's own equation integrated by mpmath, unless ``verify=False`` (the
-report then says that nothing was verified).
+says so and the slow flow by averaging is returned (no per-swing answer); an autonomous φ that
+changes the amplitude (damping, drag, friction, power laws) gets the polar slow flow, its
+amplitude law r(t) and loss per swing, checked at the N-th turning point after about 1/ε of
+time; a smooth φ asked at order ≥ 2 also gets the second-order slow flow (:mod:`averaging2`);
+otherwise the per-swing changes by variation of constants to the order asked.  Every answer
+carries the evidence of its fitted order against the problem's own equation integrated by mpmath
+(piece by piece between the kinks of abs and sign, :mod:`kinks`), unless ``verify=False`` (the
+report then says that nothing was verified) or it cannot be integrated (said, with the reason).
 """
 from __future__ import annotations
 
