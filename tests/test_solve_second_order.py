@@ -113,8 +113,9 @@ def test_second_order_slow_flow_fitted_order_two(data):
 
 @pytest.mark.slow
 def test_first_order_flow_fails_the_second_order_check():
-    """The check can fail: the first-order slow flow put in the second-order machinery has distance order 1."""
-    pr = from_dict(PARAMETRIC)
+    """The check can fail: linear damping's first-order slow flow (it misses the frequency shift −ε²/(2k))
+    put in the second-order machinery has distance order 1."""
+    pr = from_dict(LINEAR)
     flow = averaging2.slow_flow2(pr)
     first = averaging2.SlowFlow2(tuple(sp.expand(r).coeff(eps, 1) * eps for r in flow.rates), flow.generator,
                                  flow.start)
