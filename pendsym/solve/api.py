@@ -146,6 +146,8 @@ def _slow1(problem: Problem, sol: Solution, check: bool) -> None:
         sol.answers.append(Answer(f"r({problem.t.name}), the amplitude law", law))
         per_swing = sp.simplify(sp.pi / problem.k * flow.rates[0])
         sol.answers.append(Answer("Δα per swing at amplitude r (first order, any swing)", per_swing))
+    if flow.form == "polar" and flow.rates[0] == 0 and flow.rates[1] != 0:
+        _averaged_frequency(problem, sol, flow, check)
     if check:
         try:
             found = slow_checks(problem, flow, law)
@@ -155,6 +157,20 @@ def _slow1(problem: Problem, sol: Solution, check: bool) -> None:
         for ev in found:
             i = next(j for j, a in enumerate(sol.answers) if a.name == ev[0])
             sol.answers[i] = Answer(sol.answers[i].name, sol.answers[i].expr, ev[1])
+
+
+def _averaged_frequency(problem: Problem, sol: Solution, flow, check: bool) -> None:
+    """A conservative φ keeps the amplitude (r' = 0) and shifts the frequency: ω = k + β'(r) at the
+    starting amplitude, to first order; checked like Lindstedt's ω (order 2)."""
+    omega = sp.simplify(problem.k + flow.rates[1].subs(flow.variables[0], flow.start[0]))
+    ev = None
+    if check:
+        ev = truth.fitted(problem, truth=truth.frequency_truth(problem), answer=_numeric(problem, omega), expected=2,
+                          what="angular frequency 2π/T; T between the 1st and 3rd turning points, against "
+                               "k + β'(r) at the starting amplitude (first-order averaging)")
+    sol.answers.append(Answer("omega (first order, averaging)", omega, ev))
+    sol.answers.append(Answer("period (first order, averaging)",
+                              sp.expand(sp.series(2 * sp.pi / omega, problem.small, 0, 2).removeO())))
 
 
 def slow_checks(problem: Problem, flow, law) -> list:

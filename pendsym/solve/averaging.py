@@ -88,6 +88,30 @@ def _mean_piecewise(f: sp.Expr, psi: sp.Symbol, num: dict) -> sp.Expr:
     return sp.simplify(total / (2 * sp.pi))
 
 
+def _bessel_mean(facs: list, al, be, mu, nu):
+    """⟨g(z cos ψ) cos^α ψ sin^β ψ⟩, z = cr, for one factor g = sin or cos of cθ (θ = r cos ψ) given as
+    (g, z), and integer powers,
+    by the Jacobi–Anger expansions cos(z cos ψ) = J₀(z) + 2Σ_{m≥1}(−1)^m J_{2m}(z) cos 2mψ and
+    sin(z cos ψ) = 2Σ_{m≥0}(−1)^m J_{2m+1}(z) cos(2m+1)ψ: only the harmonics up to α + β meet the
+    trigonometric polynomial cos^α sin^β, so the sum is finite.  None for several such factors or for
+    abs/sign powers beside them."""
+    if len(facs) != 1 or not (al.is_integer and be.is_integer) or al != mu or be != nu:
+        return None
+    func, z = facs[0]
+    poly = sp.cos(psi_)**al * sp.sin(psi_)**be
+    top = int(al + be)
+
+    def mean_with(n):
+        return sp.integrate(sp.expand(poly * sp.cos(n * psi_)), (psi_, 0, 2 * sp.pi)) / (2 * sp.pi)
+    if func == sp.cos:
+        out = sp.besselj(0, z) * mean_with(0)
+        out += sum((2 * (-1)**m * sp.besselj(2 * m, z) * mean_with(2 * m) for m in range(1, top // 2 + 1)), sp.S.Zero)
+    else:
+        out = sum((2 * (-1)**m * sp.besselj(2 * m + 1, z) * mean_with(2 * m + 1) for m in range((top + 1) // 2)),
+                  sp.S.Zero)
+    return sp.simplify(out)
+
+
 def _monomial_mean(expr: sp.Expr, problem: Problem, weight: str):
     """⟨φ w⟩ over ψ ∈ [0, 2π] along θ = r cos ψ, θ' = −rk sin ψ (w = sin ψ or cos ψ), in closed form, when
     φ is a sum of generalized monomials c θ^i θ'^j |θ|^p |θ'|^q sign(θ)^m sign(θ')^n (p, q any real
@@ -101,10 +125,16 @@ def _monomial_mean(expr: sp.Expr, problem: Problem, weight: str):
         coeff = sp.S.One
         al, be, mu, nu = sp.S.Zero, sp.S.Zero, 0, 0      # |cos|^al |sin|^be sgn(cos)^mu sgn(sin)^nu
         scale = sp.S.One                                   # powers of r and k, and signs
+        bessel = []                                        # sin(cθ), cos(cθ) factors
         for fac in sp.Mul.make_args(term):
             base, pw = fac.as_base_exp()
             if not fac.has(th, dth):
                 coeff *= fac
+                continue
+            if fac.func in (sp.sin, sp.cos) and not fac.args[0].has(dth) and \
+                    sp.expand(fac.args[0] - th * sp.diff(fac.args[0], th)) == 0 and \
+                    not sp.diff(fac.args[0], th).has(th):
+                bessel.append((fac.func, sp.diff(fac.args[0], th) * r_))
                 continue
             if base == th and pw.is_integer:
                 al, mu, scale = al + pw, mu + pw, scale * r_**pw
@@ -126,6 +156,12 @@ def _monomial_mean(expr: sp.Expr, problem: Problem, weight: str):
             al, mu = al + 1, mu + 1
         if not (al.is_number and be.is_number) or al <= -1 or be <= -1:
             return None
+        if bessel:
+            part = _bessel_mean(bessel, al, be, mu, nu)
+            if part is None:
+                return None
+            total += coeff * scale * part
+            continue
         if int(mu) % 2 or int(nu) % 2:
             continue
         total += coeff * scale * sp.gamma((al + 1) / 2) * sp.gamma((be + 1) / 2) / (sp.pi * sp.gamma((al + be + 2) / 2))
@@ -137,8 +173,10 @@ def slow_flow(problem: Problem) -> SlowFlow:
     t, k, phi = problem.t, problem.k, problem.phi
     a0, b0 = problem.theta_i, problem.omega_i / k
     if problem.autonomous:
-        dr = _monomial_mean(phi / k, problem, "sin")
-        dbeta = _monomial_mean(phi / (k * r_), problem, "cos")
+        from sympy.simplify.fu import TR8     # products and powers of sin, cos of θ as sums (sin²θ → ½ − ½cos 2θ)
+        flat = sp.expand(TR8(phi)) if phi.has(sp.sin, sp.cos) else phi
+        dr = _monomial_mean(flat / k, problem, "sin")
+        dbeta = _monomial_mean(flat / (k * r_), problem, "cos")
         if dr is not None and dbeta is not None:
             return SlowFlow("polar", (r_, beta_), (dr, dbeta), r_ * sp.cos(k * t + beta_),
                             (sp.sqrt(a0**2 + b0**2), sp.atan2(-b0, a0)))
@@ -150,7 +188,7 @@ def slow_flow(problem: Problem) -> SlowFlow:
     if poly is None or any(c.has(problem.theta, problem.dtheta) for c in poly.coeffs()):
         raise NotAveraged("averaging is done for φ polynomial in the variable and its velocity (abs and sign of "
                           "any expression allowed when autonomous), or a sum of terms θ^i θ'^j |θ|^p |θ'|^q "
-                          "sign(θ)^m sign(θ')^n with any real p, q; for another φ make the small parameter the "
+                          "sign(θ)^m sign(θ')^n with any real p, q, or θ^i θ'^j times one sin or cos of cθ; for another φ make the small parameter the "
                           "amplitude (Lindstedt–Poincaré expands it)")
     if phi.has(sp.Abs, sp.sign) and not problem.autonomous:
         raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
