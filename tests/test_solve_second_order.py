@@ -141,3 +141,13 @@ def test_lengthening_pendulum_order_2_solve_verified():
     amp = next(x for x in sol.answers if x.name.startswith("Δα"))
     assert amp.evidence.passed and abs(amp.evidence.order - 3) < 0.35, amp.evidence
     assert sol.verified
+
+
+def test_order_2_swing_needs_closed_form_time_dependence():
+    """1/(1 + t) leaves integrals SymPy can hang on: the per-swing expansion stays first order (said in a
+    note); the lengthening pendulum (a power series in a with powers of t) and forcing cos 3t go to order 2."""
+    assert not variation.closed_form_in_time(from_dict({"small": "eps", "phi": "eps*theta/(1 + t)",
+                                                        "initial": {"value": "1"}}), 2)
+    assert variation.closed_form_in_time(from_dict(LENGTH), 2)
+    assert variation.closed_form_in_time(from_dict({"small": "eps", "phi": "-eps*cos(3*t)",
+                                                    "initial": {"value": "1"}}), 2)

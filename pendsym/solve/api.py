@@ -251,13 +251,14 @@ def _desc(problem: Problem, kinked: bool) -> str:
 
 def _swing(problem: Problem, sol: Solution, check: bool) -> None:
     n = 1
-    if problem.order > 1 and not problem.phi.has(sp.Abs, sp.sign):
+    if problem.order > 1 and not problem.phi.has(sp.Abs, sp.sign) and variation.closed_form_in_time(problem, problem.order):
         n = problem.order
         sw = variation.swing_to_order(problem, n)
     else:
         if problem.order > 1:
             sol.notes.append(f"order {problem.order} asked; the per-swing expansion is first order for a "
-                             "perturbation with abs or sign")
+                             "perturbation with abs or sign, or a time dependence other than powers of t times "
+                             "sines and cosines")
         sw = variation.first_swing(problem)
     ev_t = ev_a = None
     if check:
