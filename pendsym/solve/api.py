@@ -251,7 +251,8 @@ def _desc(problem: Problem, kinked: bool) -> str:
 
 def _swing(problem: Problem, sol: Solution, check: bool) -> None:
     n = 1
-    if problem.order > 1 and not problem.phi.has(sp.Abs, sp.sign) and variation.closed_form_in_time(problem, problem.order):
+    smooth = not problem.phi.has(sp.Abs, sp.sign)
+    if problem.order > 1 and smooth and variation.closed_form_in_time(problem, problem.order):
         n = problem.order
         sw = variation.swing_to_order(problem, n)
     else:

@@ -188,7 +188,8 @@ def slow_flow(problem: Problem) -> SlowFlow:
     if poly is None or any(c.has(problem.theta, problem.dtheta) for c in poly.coeffs()):
         raise NotAveraged("averaging is done for φ polynomial in the variable and its velocity (abs and sign of "
                           "any expression allowed when autonomous), or a sum of terms θ^i θ'^j |θ|^p |θ'|^q "
-                          "sign(θ)^m sign(θ')^n with any real p, q, or θ^i θ'^j times one sin or cos of cθ; for another φ make the small parameter the "
+                          "sign(θ)^m sign(θ')^n with any real p, q, or θ^i θ'^j times one sin or cos of cθ; "
+                          "for another φ make the small parameter the "
                           "amplitude (Lindstedt–Poincaré expands it)")
     if phi.has(sp.Abs, sp.sign) and not problem.autonomous:
         raise NotAveraged("abs or sign with an explicit time dependence is not averaged")
