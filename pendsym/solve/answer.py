@@ -55,9 +55,21 @@ def python_text(ks) -> str:
     return "\n".join(lines)
 
 
+_C_CONSTANTS = (
+    ("M_PI", "3.14159265358979323846264338327950288"), ("M_PI_2", "1.57079632679489661923132169163975144"),
+    ("M_PI_4", "0.785398163397448309615660845819875721"), ("M_1_PI", "0.318309886183790671537767526745028724"),
+    ("M_2_PI", "0.636619772367581343075535053490057448"), ("M_2_SQRTPI", "1.12837916709551257389615890312154517"),
+    ("M_SQRT2", "1.41421356237309504880168872420969808"), ("M_SQRT1_2", "0.707106781186547524400844362104849039"),
+    ("M_E", "2.71828182845904523536028747135266250"), ("M_LN2", "0.693147180559945309417232121458176568"),
+    ("M_LN10", "2.30258509299404568401799145468436421"), ("M_LOG2E", "1.44269504088896340735992468100189214"),
+    ("M_LOG10E", "0.434294481903251827651128918916605082"))
+
+
 def c_text(ks) -> str:
-    lines = ["/* Kernels of a pendsym solve answer (generated). */", "#include <math.h>",
-             "#ifndef M_PI", "#define M_PI 3.14159265358979323846264338327950288", "#endif", ""]
+    lines = ["/* Kernels of a pendsym solve answer (generated). */", "#include <math.h>"]
+    for name, value in _C_CONSTANTS:   # SymPy's C printer writes these; strict C does not define them
+        lines += [f"#ifndef {name}", f"#define {name} {value}", "#endif"]
+    lines.append("")
     for name, args, expr in ks:
         lines += [f"double {name}({', '.join('double ' + a.name for a in args)}) {{",
                   f"    return {sp.ccode(expr)};", "}", ""]

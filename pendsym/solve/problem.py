@@ -23,6 +23,7 @@
 
     [verify]                          # optional
     small = [0.01, 0.08]              # range of the geometric sequence of the small parameter
+    slow = [0.1, 0.4]                 # its range for the slow-flow checks (compared at t = 1/small)
     points = 5
     dps = 30
 
@@ -70,6 +71,7 @@ class Problem:
     omega_i: sp.Expr
     parameters: dict = field(default_factory=dict)     # Symbol -> number (a string, exact)
     small_range: tuple = ("0.01", "0.08")
+    slow_range: tuple = ("0.1", "0.4")               # ε of the slow-flow checks, compared at t = 1/ε
     points: int = 5
     dps: int = 30
     length: sp.Expr | None = None                      # set for the variable-length form
@@ -106,6 +108,14 @@ def _number_text(key: str, val) -> str:
     if not math.isfinite(val):
         raise ProblemError(f"parameter {key} must be finite")
     return repr(val)
+
+
+def _range(ver: dict, key: str, default: list, where: str) -> list:
+    rng = ver.get(key, default)
+    if (not isinstance(rng, list) or len(rng) != 2 or any(isinstance(r, bool) or not isinstance(r, (int, float))
+                                                          or not 0 < r < 10 for r in rng) or rng[0] >= rng[1]):
+        raise ProblemError(f"{where}: verify.{key} must be [low, high] with 0 < low < high < 10")
+    return rng
 
 
 def from_dict(data: dict, where: str = "problem") -> Problem:
@@ -174,12 +184,10 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
     if theta_i == 0 and omega_i == 0:
         raise ProblemError(f"{where}: [initial] value and velocity are both 0: the unperturbed motion is at rest")
     ver = data.get("verify", {})
-    if not isinstance(ver, dict) or set(ver) - {"small", "points", "dps"}:
-        raise ProblemError(f"{where}: [verify] holds small, points and dps only")
-    rng = ver.get("small", [0.01, 0.08])
-    if (not isinstance(rng, list) or len(rng) != 2 or any(isinstance(r, bool) or not isinstance(r, (int, float))
-                                                          or not 0 < r < 10 for r in rng) or rng[0] >= rng[1]):
-        raise ProblemError(f"{where}: verify.small must be [low, high] with 0 < low < high < 10")
+    if not isinstance(ver, dict) or set(ver) - {"small", "slow", "points", "dps"}:
+        raise ProblemError(f"{where}: [verify] holds small, slow, points and dps only")
+    rng = _range(ver, "small", [0.01, 0.08], where)
+    slow = _range(ver, "slow", [0.1, 0.4], where)
     points = ver.get("points", 5)
     if isinstance(points, bool) or not isinstance(points, int) or not 3 <= points <= 12:
         raise ProblemError(f"{where}: verify.points must be an integer from 3 to 12")
@@ -191,7 +199,8 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
         raise ProblemError(f"{where}: name must be a short string")
     return Problem(name=name, theta=theta, dtheta=dtheta, t=t, small=eps, order=order, method=method,
                    k=k, phi=phi, theta_i=theta_i, omega_i=omega_i, parameters=pvals,
-                   small_range=(repr(float(rng[0])), repr(float(rng[1]))), points=points, dps=dps,
+                   small_range=(repr(float(rng[0])), repr(float(rng[1]))),
+                   slow_range=(repr(float(slow[0])), repr(float(slow[1]))), points=points, dps=dps,
                    length=length)
 
 

@@ -8,7 +8,8 @@ def _evidence(ans) -> list[str]:
     ev = ans.evidence
     if ev is None:
         return []
-    verdict = ("passed" if ev.passed else "passed, above the band: the error falls faster than claimed"
+    verdict = ("passed, exact: the residual is at the rounding level at every point" if ev.passed and
+               "| exact:" in (ev.note or "") else "passed" if ev.passed else "passed, above the band: the error falls faster than claimed"
                if ans.holds else "FAILED")
     out = [f"    check: {verdict} — fitted order {ev.order} in {ev.param} "
            f"(expected {ev.expected_order:g}, band {ev.band[0]:g}…{ev.band[1]:g}); truth confirmed to "
@@ -36,7 +37,10 @@ def text(sol) -> str:
         lines += _evidence(ans)
         if sol.verified is not None and ans.evidence is None:
             lines.append("    not checked on its own (only the answers followed by a check are verified)")
-    if sol.verified is None:
+    lines += [f"not verified: {u}" for u in sol.unverified]
+    if sol.verified is None and sol.unverified:
+        lines.append("NOT VERIFIED: no answer of this problem could be checked (said above)")
+    elif sol.verified is None:
         lines.append("NOT VERIFIED: --no-verify (verification skipped)")
     elif sol.verified:
         lines.append("verified: every checked answer has at least its expected fitted order against the "

@@ -100,6 +100,31 @@ def _duhamel(force: sp.Expr, t: sp.Symbol, k: sp.Expr) -> sp.Expr:
     return _sums((sp.sin(k * t) * integral(sp.cos) - sp.cos(k * t) * integral(sp.sin)) / k)
 
 
+def closed_form_in_time(problem: Problem, n: int) -> bool:
+    """Every εʲ coefficient (j ≤ n) of φ is a sum of terms t^m sin(wt + c), t^m cos(wt + c) times powers of
+    θ and θ': the repeated Duhamel integrals then have closed forms (SymPy can hang on others, 1/(1 + t))."""
+    t, eps = problem.t, problem.small
+    try:
+        ser = sp.expand(sp.series(problem.phi, eps, 0, n + 1).removeO()) if problem.phi.has(eps) else problem.phi
+    except (ValueError, NotImplementedError, TypeError):
+        return False
+    for term in sp.Add.make_args(sp.expand(ser)):
+        for fac in sp.Mul.make_args(term):
+            if not fac.has(t):
+                continue
+            base, pw = fac.as_base_exp()
+            if base == t and pw.is_integer and pw >= 0:
+                continue
+            if fac.func in (sp.sin, sp.cos) and sp.diff(fac.args[0], t, 2) == 0 \
+                    and not fac.args[0].has(problem.theta, problem.dtheta):
+                continue
+            if base.func in (sp.sin, sp.cos) and pw.is_integer and pw > 0 and sp.diff(base.args[0], t, 2) == 0 \
+                    and not base.args[0].has(problem.theta, problem.dtheta):
+                continue
+            return False
+    return True
+
+
 def swing_to_order(problem: Problem, n: int) -> SwingAnswer:
     """ΔT and Δα of the first swing from rest to order n: θ = Σ εʲ θ_j by repeated variation of
     constants (each θ_j from the εʲ part of −φ along the lower orders), then the turning time
