@@ -229,16 +229,23 @@ def amplitude_law(problem: Problem, flow: SlowFlow) -> sp.Expr | None:
     return None
 
 
-def integrate(problem: Problem, flow: SlowFlow, eps, times, dps: int) -> list:
-    """[(θ, θ')] of the averaged motion at the increasing ``times`` (the slow flow integrated by mpmath)."""
+def flow_trajectory(problem: Problem, rates, variables, start, eps, dps: int):
+    """(trajectory, sub): the slow flow y' = rates(t, y) from y(0) = start at ε = eps, integrated
+    by mpmath at dps digits (trajectory(t) → y), and the substitution of the problem's values and
+    of ε it was built with."""
     vals = problem.values()
     sub = lambda e: e.subs(vals).subs(problem.small, sp.Rational(str(eps)))
-    f = [engine.lambdify_mp(sub(r), (problem.t, *flow.variables)) for r in flow.rates]
+    f = [engine.lambdify_mp(sub(r), (problem.t, *variables)) for r in rates]
+    with mp.workdps(dps):
+        y0 = [engine.value_at(sub(s), {}) for s in start]
+    return model.integrate(lambda t, y: [fi(t, *y) for fi in f], y0, dps=dps), sub
+
+
+def integrate(problem: Problem, flow: SlowFlow, eps, times, dps: int) -> list:
+    """[(θ, θ')] of the averaged motion at the increasing ``times`` (the slow flow integrated by mpmath)."""
+    traj, sub = flow_trajectory(problem, flow.rates, flow.variables, flow.start, eps, dps)
     th = engine.lambdify_mp(sub(flow.theta), (problem.t, *flow.variables))
     dth = engine.lambdify_mp(sub(sp.diff(flow.theta, problem.t)), (problem.t, *flow.variables))
-    with mp.workdps(dps):
-        y0 = [engine.value_at(sub(s), {}) for s in flow.start]
-    traj = model.integrate(lambda t, y: [f[0](t, *y), f[1](t, *y)], y0, dps=dps)
     out = []
     with mp.workdps(dps):
         for s in times:

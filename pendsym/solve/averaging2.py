@@ -26,9 +26,9 @@ import sympy as sp
 
 from .. import truth as model
 from .. import verify as engine
-from .averaging import NotAveraged, a_, b_
+from .averaging import NotAveraged, a_, b_, flow_trajectory
 from .problem import Problem
-from .secular import NEAR
+from .secular import NEAR, frequencies
 
 Modes = dict   # w -> SymPy coefficient of e^{iwt}
 
@@ -45,19 +45,10 @@ class SlowFlow2:
 
 
 def modes(expr: sp.Expr, t: sp.Symbol) -> Modes:
-    """expr = Σ c_w e^{iwt}: {w: c_w}; raises NotAveraged if some c_w still holds t."""
-    ex = sp.expand(sp.powsimp(sp.expand(expr.rewrite(sp.exp)), combine="exp"))
+    """expr = Σ c_w e^{iwt}: {w: c_w} (:func:`.secular.frequencies`, terms of one w added);
+    raises NotAveraged if some c_w still holds t."""
     out: dict = {}
-    for term in sp.Add.make_args(ex):
-        w, rest = sp.S.Zero, sp.S.One
-        for fac in sp.Mul.make_args(term):
-            base, pw = fac.as_base_exp()
-            if (fac.func == sp.exp or base == sp.E) and fac.has(t):
-                arg = fac.args[0] if fac.func == sp.exp else pw
-                w += sp.expand(arg / (sp.I * t))
-            else:
-                rest *= fac
-        w = sp.expand(w)
+    for w, rest in frequencies(expr, t):
         if rest.has(t) or w.has(t):
             raise NotAveraged("the time dependence is not a sum of oscillations e^{iwt} with constant frequencies")
         out[w] = out.get(w, 0) + rest
@@ -137,15 +128,10 @@ def slow_flow2(problem: Problem) -> SlowFlow2:
 
 
 def integrate(problem: Problem, flow: SlowFlow2, eps, times, dps: int) -> list:
-    """[(a, b)] of the motion at the increasing ``times``: z integrated by mpmath from z(0), then
-    x = z + εu₁(z, t)."""
-    vals = problem.values()
-    sub = lambda e: e.subs(vals).subs(problem.small, sp.Rational(str(eps)))
-    f = [engine.lambdify_mp(sub(r), (problem.t, a_, b_)) for r in flow.rates]
+    """[(a, b)] of the motion at the increasing ``times``: z integrated by mpmath from z(0)
+    (:func:`.averaging.flow_trajectory`), then x = z + εu₁(z, t)."""
+    traj, sub = flow_trajectory(problem, flow.rates, (a_, b_), flow.start, eps, dps)
     g = [engine.lambdify_mp(sub(problem.small * u), (problem.t, a_, b_)) for u in flow.generator]
-    with mp.workdps(dps):
-        z0 = [engine.value_at(sub(s), {}) for s in flow.start]
-    traj = model.integrate(lambda s, y: [f[0](s, *y), f[1](s, *y)], z0, dps=dps)
     out = []
     with mp.workdps(dps):
         for at in times:

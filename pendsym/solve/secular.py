@@ -26,7 +26,7 @@ class Finding:
     resonant: bool  # a per-swing answer repeated over swings would be wrong
 
 
-def _frequencies(expr: sp.Expr, t: sp.Symbol) -> list[tuple[sp.Expr, sp.Expr]]:
+def frequencies(expr: sp.Expr, t: sp.Symbol) -> list[tuple[sp.Expr, sp.Expr]]:
     """[(w, c)] with expr = Σ c e^{iwt}; c may still hold powers of t."""
     ex = sp.expand(sp.powsimp(sp.expand(expr.rewrite(sp.exp)), combine="exp"))
     out = []
@@ -67,7 +67,7 @@ def classify(problem: Problem) -> Finding:
     theta0 = a * sp.cos(k * t) + b * sp.sin(k * t)
     along = timed.subs({problem.theta: theta0, problem.dtheta: sp.diff(theta0, t)}, simultaneous=True)
     exact, near, slow = [], [], False
-    for w, c in _frequencies(along, t):
+    for w, c in frequencies(along, t):
         if c.has(t):
             slow = True
             continue
