@@ -80,8 +80,8 @@ def _slope_over_epsilon(rel: float, inst: Instrument, S: float) -> tuple[float, 
 
 
 def _inverted_symbols(inst: Instrument) -> dict[str, float]:
-    return {"a": inst.a, "R": inst.R, "lambda": inst.blade_length, "u": inst.blade_u, "g": inst.g,
-            "theta_0": inst.alpha}
+    """The blade's symbols (:func:`_blade`) and the amplitude θ0 of (283)."""
+    return {**_blade(inst), "theta_0": inst.alpha}
 
 
 A1, G314, C317 = "haag1935.eq310.a1", "haag1935.eq314.G", "haag1935.eq317.C"
