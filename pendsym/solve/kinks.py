@@ -21,6 +21,7 @@ written.
 """
 from __future__ import annotations
 
+import itertools
 from bisect import bisect_right
 from dataclasses import dataclass
 
@@ -51,13 +52,6 @@ def smooth_part(phi: sp.Expr, args: list, signs: tuple) -> sp.Expr:
         rep[sp.Abs(g)] = s * g
         rep[sp.sign(g)] = sp.Integer(s)
     return phi.xreplace(rep)
-
-
-def _corners(n: int) -> list:
-    out = [()]
-    for _ in range(n):
-        out = [c + (s,) for c in out for s in (1, -1)]
-    return out
 
 
 def _require_analytic(expr: sp.Expr, args: list) -> None:
@@ -97,7 +91,7 @@ def integrate(problem: Problem, eps, dps: int, t_end) -> Piecewise:
     k2 = (problem.k**2).subs(vals)
     phi = problem.phi.subs(vals)
     args = kink_arguments(phi)
-    for s in _corners(len(args)):
+    for s in itertools.product((1, -1), repeat=len(args)):
         _require_analytic(smooth_part(phi, args, s), args)
     g_f = [engine.lambdify_mp(g, (t, th, dth)) for g in args]
     dg_f = [engine.lambdify_mp(sp.diff(g, th), (t, th, dth)) for g in args]
@@ -105,6 +99,10 @@ def integrate(problem: Problem, eps, dps: int, t_end) -> Piecewise:
     dgt_f = [engine.lambdify_mp(sp.diff(g, t), (t, th, dth)) for g in args]
     kinked_accel = engine.lambdify_mp(-k2 * th - phi, (t, th, dth))
     accel_of = {}
+
+    def rate(i, t0, y, acc):
+        """dg_i/dt along the motion at (t0, y), θ'' given by acc."""
+        return dg_f[i](t0, *y) * y[1] + dgv_f[i](t0, *y) * acc(t0, *y) + dgt_f[i](t0, *y)
 
     def accel(signs):
         if signs not in accel_of:
@@ -126,17 +124,16 @@ def integrate(problem: Problem, eps, dps: int, t_end) -> Piecewise:
                 if abs(g) > tiny:
                     signs.append(1 if g > 0 else -1)
                     continue
-                rate = dg_f[i](t0, *y) * y[1] + dgv_f[i](t0, *y) * kinked_accel(t0, *y) + dgt_f[i](t0, *y)
-                if abs(rate) <= tiny:
+                r = rate(i, t0, y, kinked_accel)
+                if abs(r) <= tiny:
                     raise NotIntegrable(f"the motion reaches {sp.sstr(args[i])} = 0 with zero rate at "
                                         f"t = {mp.nstr(t0, 8)} (sticking): the equation does not decide it")
-                signs.append(1 if rate > 0 else -1)
+                signs.append(1 if r > 0 else -1)
             signs = tuple(signs)
             f = accel(signs)
             for i, s in enumerate(signs):      # leaving the kink on the chosen side must be consistent
                 if abs(g_f[i](t0, *y)) <= tiny:
-                    rate = dg_f[i](t0, *y) * y[1] + dgv_f[i](t0, *y) * f(t0, *y) + dgt_f[i](t0, *y)
-                    if s * rate <= 0:
+                    if s * rate(i, t0, y, f) <= 0:
                         raise NotIntegrable(f"the motion cannot leave {sp.sstr(args[i])} = 0 on either side at "
                                             f"t = {mp.nstr(t0, 8)} (sticking): the equation does not decide it")
             traj = model.integrate(lambda s, u, f=f: [u[1], f(s, u[0], u[1])], y, dps=dps, t0=t0)
