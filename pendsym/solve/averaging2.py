@@ -24,7 +24,6 @@ from dataclasses import dataclass
 import mpmath as mp
 import sympy as sp
 
-from .. import truth as model
 from .. import verify as engine
 from .averaging import NotAveraged, a_, b_, flow_trajectory
 from .problem import Problem
