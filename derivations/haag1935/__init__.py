@@ -12,6 +12,7 @@ from . import ch7_clamping, ch7_dissymmetry, ch7_isochronism, ch7_mass
 from .ch7_gravity import figures as ch7_figures
 from .ch8_inverted import figures as ch8_figures
 from .ch9_holes import figures as ch9_figures
+from .memoir_order import equation
 
 
 def _of(package) -> tuple[Section, ...]:
@@ -56,7 +57,7 @@ SECTIONS = CHAPTER_1 + CHAPTER_2 + CHAPTER_3 + CHAPTER_4 + CHAPTER_5 + CHAPTER_6
 def _eqs(lo: int, hi: int, chapter: tuple[Section, ...]):
     """Takes a Spec of the chapter whose equation number lies in [lo, hi]."""
     ids = {s.id for sec in chapter for s in sec.specs}
-    return lambda spec: spec.id in ids and lo <= int(spec.id.split(".")[1][2:]) <= hi
+    return lambda spec: spec.id in ids and lo <= equation(spec) <= hi
 
 
 HEADINGS = (
