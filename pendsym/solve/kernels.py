@@ -89,9 +89,25 @@ def build(sol, closed: list) -> list[SolveKernel]:
     out = []
     for name, label, syms, expr in closed:
         args = tuple(domain_of(sol.problem, s.name) for s in syms)
-        choice = kn.choose_form(expr, args, name)
-        out.append(SolveKernel(name, label, args, expr, choice.form, choice.rule))
+        plain = _signs_known(expr, syms, args)
+        try:
+            choice = kn.choose_form(plain, args, name)
+            form, rule = choice.form, choice.rule
+        except (sp.PolynomialError, ValueError, TypeError, ZeroDivisionError) as exc:   # a rule that cannot
+            form, rule = plain, f"as-derived (the rewrite rules did not apply: {type(exc).__name__})"  # take it
+        out.append(SolveKernel(name, label, args, expr, form, rule))
     return out
+
+
+def _signs_known(expr: sp.Expr, syms: tuple, args: tuple) -> sp.Expr:
+    """expr with |x| → ±x and sign(x) → ±1 for each argument whose domain has one sign (the same
+    function there; the reference stays the answer's own form)."""
+    rep = {}
+    for s, a in zip(syms, args):
+        if a.lo >= 0 or a.hi <= 0:
+            sgn = 1 if a.lo >= 0 else -1
+            rep.update({sp.Abs(s): sgn * s, sp.sign(s): sp.Integer(sgn)})
+    return expr.xreplace(rep) if rep else expr
 
 
 def _header(k: SolveKernel, problem) -> str:
