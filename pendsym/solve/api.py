@@ -178,8 +178,11 @@ def _averaged_frequency(problem: Problem, sol: Solution, flow, check: bool) -> N
                               sp.expand(sp.series(2 * sp.pi / omega, problem.small, 0, 2).removeO())))
 
 
-def slow_checks(problem: Problem, flow, law) -> list:
+def slow_checks(problem: Problem, flow, law, amplitude_of=None) -> list:
     """[(answer name, evidence)] of the slow flow against the problem's own equation over many swings.
+
+    ``amplitude_of(eps, times)``, when given, replaces the slow flow's amplitude at those times (the
+    bench judges another package's amplitude by this same check; ``flow`` and ``law`` are then unused).
 
     The observable is at times O(1/ε), where the averaging error is O(ε): for an autonomous
     problem, |θ| at the N-th turning point, N = round(k/(πε)) swings (about 1/ε in time), against
@@ -214,16 +217,19 @@ def slow_checks(problem: Problem, flow, law) -> list:
             return sum(amplitude(*traj(s)) for s in times(eps)) / 8
 
     law_at = (sp.lambdify((problem.small, problem.t), law.subs(problem.values()), modules="mpmath")
-              if law is not None else None)
+              if law is not None and amplitude_of is None else None)
 
     def slow_amplitude(eps, at):
         """The slow flow's amplitude at the increasing times ``at``."""
+        if amplitude_of is not None:
+            return amplitude_of(eps, at)
         if law_at is not None:
             return [law_at(mp.mpf(eps), s) for s in at]
         return [amplitude(*y) for y in averaging.integrate(problem, flow, eps, at, mp.mp.dps)]
 
     name = f"r({problem.t.name}), the amplitude law" if law is not None else problem.theta.name
-    how = "the amplitude law" if law is not None else "the slow flow integrated"
+    how = ("the amplitude given" if amplitude_of is not None else "the amplitude law" if law is not None
+           else "the slow flow integrated")
     if not problem.autonomous:
         return [(name, truth.fitted(
             problem, truth=window, answer=lambda eps: sum(slow_amplitude(eps, times(eps))) / 8, expected=1,
