@@ -78,7 +78,7 @@ def cmd_solve(args) -> int:
         except (OSError, RuntimeError) as exc:
             raise UsageError(f"cannot emit under {args.emit}: {getattr(exc, 'strerror', None) or exc}") from None
         print(f"wrote answer.tex, answer.py, answer.c under {args.emit}/ (kernels measured: docs/kernel-accuracy.md)")
-        print("\n".join(answer.kernels.summary(rows)))
+        print("\n".join(answer.kernels.summary(rows) + [f"  {line}" for line in answer.not_kernels(sol)]))
         over = [k.name for k in rows if k.over]
         if over:
             print(f"KERNELS OVER THE BOUND: {', '.join(over)} (written, marked OVER THE BOUND)", file=sys.stderr)

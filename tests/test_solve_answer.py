@@ -108,3 +108,14 @@ def test_drag_kernels_measured_through_the_command(tmp_path):
     want = 3 * math.pi * A / (3 * math.pi + 8 * eps * A * t)
     assert abs(mod.k_r_t(A, eps, t) - want) <= 4 * math.ulp(want)
     assert "OVER THE BOUND" not in (tmp_path / "answer.c").read_text()
+
+
+def test_answer_without_a_math_function_is_said_not_emitted():
+    """θ'' + θ + ε sin θ: ω = 1 + εJ₁(A)/A has no kernel (neither math nor C99 libm has J₁): said, not a crash."""
+    sol = solve({"small": "eps", "phi": "eps*sin(theta)", "initial": {"value": "A"}, "parameters": {"A": 1}},
+                verify=False)
+    names = [k[1] for k in answer.kernels_of(sol)]
+    lines = answer.not_kernels(sol)
+    assert any(line.startswith("no kernel for omega (first order, averaging): ") and "besselj" in line
+               for line in lines), lines
+    assert not any(n.startswith("omega") for n in names)

@@ -25,7 +25,17 @@ def _ident(name: str) -> str:
 
 def kernels_of(sol) -> list[tuple[str, str, tuple, sp.Expr]]:
     """(function name, answer name, argument symbols, expression) of each closed-form answer with
-    arguments (a constant answer is not a kernel)."""
+    arguments (a constant answer is not a kernel) that the kernels' printers can write."""
+    return [k for k in _closed(sol) if kernels.unprintable(*k) is None]
+
+
+def not_kernels(sol) -> list[str]:
+    """One line for each closed-form answer the printers cannot write (a function that neither
+    Python's math nor C99's libm has, such as a Bessel function)."""
+    return [f"no kernel for {k[1]}: {why}" for k in _closed(sol) if (why := kernels.unprintable(*k)) is not None]
+
+
+def _closed(sol) -> list[tuple[str, str, tuple, sp.Expr]]:
     pr = sol.problem
     allowed = {pr.small, *pr.parameters, sp.Symbol(kernels.TAU, real=True), pr.t}
     out, seen = [], set()
@@ -39,7 +49,7 @@ def kernels_of(sol) -> list[tuple[str, str, tuple, sp.Expr]]:
             continue
         seen.add(name)
         args = tuple(sorted(expr.free_symbols, key=lambda s: s.name))
-        out.append((name, ans.name.split(",")[0], args, expr))
+        out.append((name, ans.name.rstrip(", "), args, expr))
     return out
 
 

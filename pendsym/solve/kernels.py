@@ -99,6 +99,17 @@ def build(sol, closed: list) -> list[SolveKernel]:
     return out
 
 
+def unprintable(name: str, label: str, syms: tuple, expr: sp.Expr) -> str | None:
+    """Why the kernels' printers cannot write expr in Python or C (None when both can)."""
+    args = tuple(KernelArg(s.name, 0.0, 1.0) for s in syms)
+    for lang in ("py", "c"):
+        try:
+            kn.printed(kn.kernel_function(name, args, expr), lang)
+        except Exception as exc:  # SymPy's printers raise their own kinds for an unsupported function
+            return f"{'Python math' if lang == 'py' else 'C99 libm'} has no {str(exc).split(': ')[-1].splitlines()[0]}"
+    return None
+
+
 def _signs_known(expr: sp.Expr, syms: tuple, args: tuple) -> sp.Expr:
     """expr with |x| → ±x and sign(x) → ±1 for each argument whose domain has one sign (the same
     function there; the reference stays the answer's own form)."""
