@@ -23,9 +23,9 @@ a comment changes no result, and the bodies measured are those written.
 from __future__ import annotations
 
 import ctypes
-import importlib.util
 import math
 import tempfile
+import types
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -164,9 +164,10 @@ def c_text(ks: list, problem) -> str:
 
 
 def _load_py(path: Path):
-    spec = importlib.util.spec_from_file_location(f"pendsym_solve_{abs(hash(str(path)))}", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)          # the code pendsym printed from the answer
+    """answer.py run as a module (no bytecode cache is written beside it)."""
+    module = types.ModuleType("pendsym_solve_answer")
+    module.__file__ = str(path)
+    exec(compile(path.read_text(), str(path), "exec"), module.__dict__)   # the code pendsym printed from the answer
     return module
 
 
