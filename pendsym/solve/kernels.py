@@ -95,7 +95,42 @@ def build(sol, closed: list) -> list[SolveKernel]:
             form, rule = choice.form, choice.rule
         except (sp.PolynomialError, ValueError, TypeError, ZeroDivisionError) as exc:   # a rule that cannot
             form, rule = plain, f"as-derived (the rewrite rules did not apply: {type(exc).__name__})"  # take it
+        small = next((s for s in syms if s == sol.problem.small), None)
+        series = small_last(plain, small) if small is not None else None
+        if series is not None and series != form:
+            pts = kn.kernel_sample(expr, args, name)
+            truths = kn.references(expr, args, pts)
+            mine, theirs = (kn.measure(kn.emitted_py(name, args, f), expr, args, pts, truths).max_scaled
+                            for f in (series, form))
+            if mine < theirs:
+                form, rule = series, SMALL_LAST
         out.append(SolveKernel(name, label, args, expr, form, rule))
+    return out
+
+
+SMALL_LAST = "small-parameter Horner (higher orders first, each coefficient's multiple angles in its phase)"
+
+
+def small_last(expr: sp.Expr, small: sp.Symbol) -> sp.Expr | None:
+    """An answer Σ εʲ c_j written (… (c_n ε + c_{n−1}) ε + …) ε + c_0: the corrections, small, are summed
+    first and the leading term last, so that the roundings of the many small terms do not add up at
+    the ulp of the whole (the pendulum's θ(τ) to α¹¹: 5.6 ulp as one sum, 1.3 so); each c_j with its
+    sin mφ, cos mφ (m ≥ 3) written in sin φ, cos φ (the rule 'multiple-angles'). None when the answer
+    is not a polynomial in ε of degree ≥ 2."""
+    try:
+        poly = sp.Poly(sp.expand(expr), small)
+    except sp.PolynomialError:
+        return None
+    if poly.degree() < 2 or any(c.has(small) for c in poly.all_coeffs()):
+        return None
+    angles = next(r for r in kn.REWRITES if r.name == "multiple-angles")
+    out = sp.S.Zero
+    for c in poly.all_coeffs():
+        try:
+            c = angles(c)
+        except ValueError:          # no multiple angle in this coefficient
+            pass
+        out = out * small + c
     return out
 
 
@@ -154,10 +189,24 @@ def python_text(ks: list, problem) -> str:
     return "\n".join(parts)
 
 
+# SymPy's C printer writes these macros for π/2, √2 …; strict C99 does not define them
+_C_CONSTANTS = (
+    ("M_PI", "3.14159265358979323846264338327950288"), ("M_PI_2", "1.57079632679489661923132169163975144"),
+    ("M_PI_4", "0.785398163397448309615660845819875721"), ("M_1_PI", "0.318309886183790671537767526745028724"),
+    ("M_2_PI", "0.636619772367581343075535053490057448"), ("M_2_SQRTPI", "1.12837916709551257389615890312154517"),
+    ("M_SQRT2", "1.41421356237309504880168872420969808"), ("M_SQRT1_2", "0.707106781186547524400844362104849039"),
+    ("M_E", "2.71828182845904523536028747135266250"), ("M_LN2", "0.693147180559945309417232121458176568"),
+    ("M_LN10", "2.30258509299404568401799145468436421"), ("M_LOG2E", "1.44269504088896340735992468100189214"),
+    ("M_LOG10E", "0.434294481903251827651128918916605082"))
+
+
 def c_text(ks: list, problem) -> str:
     parts = [f"/* Kernels of a pendsym solve answer: {problem.name} (generated; do not edit).\n"
              f" * C99, libm only.  Each comment gives the kernel's domain and its measured error;\n"
-             f" * the contract is {CONTRACT}. */", "#include <errno.h>", "#include <math.h>", ""]
+             f" * the contract is {CONTRACT}. */", "#include <errno.h>", "#include <math.h>"]
+    for name, value in _C_CONSTANTS:
+        parts += [f"#ifndef {name}", f"#define {name} {value}", "#endif"]
+    parts.append("")
     for k in ks:
         parts += [kn.definition(_function(k), "c", _header(k, problem)), ""]
     return "\n".join(parts)
