@@ -138,7 +138,12 @@ def _judge_omega(problem, omega, expected, square):
 def _judge_slow(problem, sol):
     t = problem.t
     amp = sp.sqrt(sp.sympify(sol.amplitude_A) ** 2 + sp.sympify(sol.amplitude_B) ** 2)
-    amp = _ours(problem, amp, {"T_0": t, "T_1": problem.small * t, "t": t})
+    fast = "T_0" in {s.name for s in amp.free_symbols}
+    try:
+        amp = _ours(problem, amp, {"T_0": t, "T_1": problem.small * t, "t": t})
+    except PeerError as exc:
+        raise PeerError(("its slow amplitude depends on the fast time T_0 (not averaged over it); " if fast else "")
+                        + str(exc)) from None
     if amp.free_symbols - {problem.small, t}:
         raise PeerError(f"its amplitude keeps {sorted(map(str, amp.free_symbols - {problem.small, t}))}")
     f = sp.lambdify((problem.small, t), amp, modules="mpmath")
