@@ -7,7 +7,8 @@ kernels, not a second one (docs/kernel-accuracy.md):
 - its **domain** is the box of :func:`domain_of`: the problem file's ``[domain]`` table, or the
   defaults written there (docs/solve.md);
 - its **form** is chosen among the named rewrite rules by :func:`pendsym.emit.kernels.choose_form`
-  on the kernel's seeded sample (:func:`pendsym.emit.kernels.kernel_sample`);
+  on the kernel's seeded sample (:func:`pendsym.emit.kernels.kernel_sample`), against the answer
+  in Horner form in the small parameter (:func:`small_last`) where it is a polynomial in it;
 - it is **printed** by the kernels' printers (:func:`pendsym.emit.kernels.definition`), with the
   guard of its domain (a ValueError in Python, NaN and errno = EDOM in C outside it);
 - it is **measured** from the files as written (answer.py imported, answer.c compiled with
