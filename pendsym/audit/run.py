@@ -206,8 +206,9 @@ def tiny_points(job: Job, rng_seed: str) -> list[tuple]:
     return out
 
 
-def audit_one(job: Job) -> dict:
-    """The audit of one kernel (run in a worker): its figures and its worst point."""
+def audit_one(job: Job, points: int = POINTS) -> dict:
+    """The audit of one kernel (run in a worker): its figures and its worst point (`points`: at
+    least so many, the search included; fewer than POINTS only for a quick measure)."""
     start = time.process_time()
     judge = Judge(job)
     params = [kn.identifier(a.name) for a in job.args]
@@ -215,7 +216,7 @@ def audit_one(job: Job) -> dict:
     climbs = CLIMB_STARTS * pt.climb_length(CLIMB_BUDGET // CLIMB_STARTS)
     pts = list(dict.fromkeys(hard))
     seen = set(pts)
-    pts += [p for p in dict.fromkeys(pt.random_points(job.args, job.name, max(0, POINTS - len(pts) - climbs)))
+    pts += [p for p in dict.fromkeys(pt.random_points(job.args, job.name, max(0, points - len(pts) - climbs)))
             if p not in seen]
     rows = []                                   # (max scaled, point, py ulp, c ulp, κ, py scaled, c scaled)
     first = [(p, judge.errors(p)) for p in pts]

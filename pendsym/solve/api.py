@@ -133,7 +133,13 @@ def _slow2(problem: Problem, sol: Solution, check: bool) -> None:
              "(a, b) = (θ cos kt − (θ'/k) sin kt, θ sin kt + (θ'/k) cos kt) the variation-of-constants "
              "coordinates of the motion, against z + εu1(z, t) with z the second-order slow flow integrated "
              "from z(0) (error O(ε²) over times O(1/ε))")
-    sol.answers[-len(flow.start) - len(flow.generator) - 2] = Answer(names[0], flow.rates[0], ev)
+    _attach(sol, names[0], ev)
+
+
+def _attach(sol: Solution, name: str, ev: Evidence) -> None:
+    """The evidence of a check put beside the answer of that name."""
+    i = next(j for j, a in enumerate(sol.answers) if a.name == name)
+    sol.answers[i] = Answer(sol.answers[i].name, sol.answers[i].expr, ev)
 
 
 def _slow1(problem: Problem, sol: Solution, check: bool) -> None:
@@ -154,9 +160,8 @@ def _slow1(problem: Problem, sol: Solution, check: bool) -> None:
         except kinks.NotIntegrable as exc:
             sol.unverified.append(f"the slow flow is not checked: {exc}")
             found = []
-        for ev in found:
-            i = next(j for j, a in enumerate(sol.answers) if a.name == ev[0])
-            sol.answers[i] = Answer(sol.answers[i].name, sol.answers[i].expr, ev[1])
+        for name, ev in found:
+            _attach(sol, name, ev)
 
 
 def _averaged_frequency(problem: Problem, sol: Solution, flow, check: bool) -> None:
@@ -173,8 +178,11 @@ def _averaged_frequency(problem: Problem, sol: Solution, flow, check: bool) -> N
                               sp.expand(sp.series(2 * sp.pi / omega, problem.small, 0, 2).removeO())))
 
 
-def slow_checks(problem: Problem, flow, law) -> list:
+def slow_checks(problem: Problem, flow, law, amplitude_of=None) -> list:
     """[(answer name, evidence)] of the slow flow against the problem's own equation over many swings.
+
+    ``amplitude_of(eps, times)``, when given, replaces the slow flow's amplitude at those times (the
+    bench judges another package's amplitude by this same check; ``flow`` and ``law`` are then unused).
 
     The observable is at times O(1/ε), where the averaging error is O(ε): for an autonomous
     problem, |θ| at the N-th turning point, N = round(k/(πε)) swings (about 1/ε in time), against
@@ -183,7 +191,7 @@ def slow_checks(problem: Problem, flow, law) -> list:
     averaged over the unperturbed period starting at t = 1/ε.  A
     problem with abs or sign is integrated piece by piece between its kinks (:mod:`kinks`)."""
     with mp.workdps(problem.dps + 25):        # the unperturbed period, at more digits than any truth uses
-        kval = truth.unperturbed_period(problem)
+        period = truth.unperturbed_period(problem)
     lo, hi = problem.slow_range
     kinked = problem.phi.has(sp.Abs, sp.sign)
     memo = {}
@@ -192,31 +200,36 @@ def slow_checks(problem: Problem, flow, law) -> list:
         key = (str(eps), dps)
         if key not in memo:
             if kinked:
-                memo[key] = kinks.integrate(problem, eps, dps, 1 / mp.mpf(eps) + 2 * kval)
+                memo[key] = kinks.integrate(problem, eps, dps, 1 / mp.mpf(eps) + 2 * period)
             else:
                 memo[key] = truth.trajectory(problem, eps, dps)
         return memo[key]
 
     def amplitude(th, dth):
-        return mp.sqrt(th**2 + (dth * kval / (2 * mp.pi))**2)
+        return mp.sqrt(th**2 + (dth * period / (2 * mp.pi))**2)
 
     def times(eps):    # a window of one unperturbed period from t = 1/ε: the mean removes the
-        return [1 / mp.mpf(eps) + kval * j / 8 for j in range(8)]   # oscillation within a period
+        return [1 / mp.mpf(eps) + period * j / 8 for j in range(8)]   # oscillation within a period
 
     def window(eps, dps):
         traj = motion(eps, dps)
         with mp.workdps(dps):
             return sum(amplitude(*traj(s)) for s in times(eps)) / 8
 
+    law_at = (sp.lambdify((problem.small, problem.t), law.subs(problem.values()), modules="mpmath")
+              if law is not None and amplitude_of is None else None)
+
     def slow_amplitude(eps, at):
         """The slow flow's amplitude at the increasing times ``at``."""
-        if law is not None:
-            f = sp.lambdify((problem.small, problem.t), law.subs(problem.values()), modules="mpmath")
-            return [f(mp.mpf(eps), s) for s in at]
+        if amplitude_of is not None:
+            return amplitude_of(eps, at)
+        if law_at is not None:
+            return [law_at(mp.mpf(eps), s) for s in at]
         return [amplitude(*y) for y in averaging.integrate(problem, flow, eps, at, mp.mp.dps)]
 
     name = f"r({problem.t.name}), the amplitude law" if law is not None else problem.theta.name
-    how = "the amplitude law" if law is not None else "the slow flow integrated"
+    how = ("the amplitude given" if amplitude_of is not None else "the amplitude law" if law is not None
+           else "the slow flow integrated")
     if not problem.autonomous:
         return [(name, truth.fitted(
             problem, truth=window, answer=lambda eps: sum(slow_amplitude(eps, times(eps))) / 8, expected=1,
@@ -225,7 +238,7 @@ def slow_checks(problem: Problem, flow, law) -> list:
                  f"at the same times (averaging: error O(ε) over times O(1/ε))"))]
 
     def swings(eps):
-        return max(1, int(mp.nint(2 / (kval * mp.mpf(eps)))))
+        return max(1, int(mp.nint(2 / (period * mp.mpf(eps)))))
 
     def nth_turn(eps, dps):
         traj = motion(eps, dps)
@@ -234,7 +247,7 @@ def slow_checks(problem: Problem, flow, law) -> list:
             return abs(traj(t_n)[0])
 
     return [(name, truth.fitted(
-        problem, truth=nth_turn, answer=lambda eps: slow_amplitude(eps, [swings(eps) * kval / 2])[0], expected=1,
+        problem, truth=nth_turn, answer=lambda eps: slow_amplitude(eps, [swings(eps) * period / 2])[0], expected=1,
         lo=lo, hi=hi, truth_desc=_desc(problem, kinked),
         what=f"|θ| at the N-th turning point, N = round(k/(πε)) swings (N = {swings(hi)} … {swings(lo)}), "
              f"against {how} at t = Nπ/k: the per-swing loss repeated over many swings (averaging: error "

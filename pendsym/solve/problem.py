@@ -27,6 +27,10 @@
     points = 5
     dps = 30
 
+    [domain]                          # optional: the range of each kernel argument (--emit)
+    eps = [0, 0.1]
+    A = [0.1, 2]
+
 Every formula goes through :func:`pendsym.solve.parse.parse`.  Any fault raises
 :class:`ProblemError` with a one-line message.
 """
@@ -47,7 +51,7 @@ MAX_ORDER = 12
 METHODS = ("auto", "lindstedt", "variation", "averaging")
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
 _TOP = {"name", "variable", "velocity", "time", "small", "order", "method", "k", "phi", "length",
-        "gravity", "initial", "parameters", "verify"}
+        "gravity", "initial", "parameters", "verify", "domain"}
 
 
 class ProblemError(ValueError):
@@ -75,6 +79,7 @@ class Problem:
     points: int = 5
     dps: int = 30
     length: sp.Expr | None = None                      # set for the variable-length form
+    domain: tuple = ()                                 # ((name, (lo, hi)), …): kernel argument ranges (--emit)
 
     @property
     def autonomous(self) -> bool:
@@ -194,6 +199,7 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
     dps = ver.get("dps", 30)
     if isinstance(dps, bool) or not isinstance(dps, int) or not 30 <= dps <= 60:
         raise ProblemError(f"{where}: verify.dps must be an integer from 30 to 60")
+    domain = _domain(data.get("domain", {}), {small, *params, "tau", tim}, where)
     name = data.get("name", "problem")
     if not isinstance(name, str) or len(name) > 200:
         raise ProblemError(f"{where}: name must be a short string")
@@ -201,7 +207,24 @@ def from_dict(data: dict, where: str = "problem") -> Problem:
                    k=k, phi=phi, theta_i=theta_i, omega_i=omega_i, parameters=pvals,
                    small_range=(repr(float(rng[0])), repr(float(rng[1]))),
                    slow_range=(repr(float(slow[0])), repr(float(slow[1]))), points=points, dps=dps,
-                   length=length)
+                   length=length, domain=domain)
+
+
+def _domain(table, names: set, where: str) -> tuple:
+    """The [domain] table: a range [lo, hi] (finite numbers, lo < hi) for any kernel argument."""
+    if not isinstance(table, dict):
+        raise ProblemError(f"{where}: [domain] must be a table of ranges")
+    out = []
+    for key, rng in table.items():
+        if key not in names:
+            raise ProblemError(f"{where}: domain.{str(key)[:20]} is not a kernel argument (the small parameter, "
+                               f"a parameter, tau or the time)")
+        if (not isinstance(rng, list) or len(rng) != 2 or any(isinstance(r, bool) or not isinstance(r, (int, float))
+                                                              or not math.isfinite(r) or abs(r) > 1e300 for r in rng)
+                or rng[0] >= rng[1]):
+            raise ProblemError(f"{where}: domain.{key} must be [low, high], finite numbers with low < high")
+        out.append((key, (float(rng[0]), float(rng[1]))))
+    return tuple(sorted(out))
 
 
 def load(path) -> Problem:
