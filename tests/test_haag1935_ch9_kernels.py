@@ -156,3 +156,20 @@ def test_scaled_error_test_can_fail():
     ref = kf.reference("v0", 1.7, 1e-8)
     assert kf.ulp_error(fixed(1.7, 1e-8), ref) <= 4
     assert kf.ulp_error(fixed(1.7, 1e-8) * (1 + 3e-15), ref) > 4
+
+
+# ---------------------------------------------------------------- the rectangular hole in (u, u_p, ρ)
+@pytest.mark.slow
+def test_rectangle_concentric_scaled_agrees_with_the_shot_blade():
+    """G_2/λ of the concentric hole in (u, u_p, ρ) at 40 digits against the inverted blade with a rectangular hole
+    shot at 30 digits (no trigonometric closed form): (ω, ω', λ, s_0, p) = (1, 3/2, 1, 3/10, 2/5), (6/5, 3, 1, 9/20,
+    1/10) and (1/2, 5/4, 2, 13/20, 7/10)."""
+    from derivations.haag1935.ch9_holes import rectangle_truth
+    form = kf.rectangle_concentric_scaled()
+    for case in (("1", "3/2", "1", "3/10", "2/5"), ("6/5", "3", "1", "9/20", "1/10"), ("1/2", "5/4", "2", "13/20", "7/10")):
+        om, omp, length, _, height = (sp.Rational(t) for t in case)
+        sol = rectangle_truth.shot(case, 30)
+        with mp.workdps(30):
+            truth = rhombus_truth.G2(sol) / (mp.mpf(length.p) / length.q)
+        value = sp.N(form.subs({u: om * length, kf.u_p: omp * height, kf.rho: height / length}), 40)
+        assert abs(value - sp.Float(mp.nstr(truth, 30), 30)) < 1e-24 * abs(value), case
