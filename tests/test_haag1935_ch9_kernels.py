@@ -75,6 +75,24 @@ def test_libm_bessel_near_zeros_within_its_own_condition(name):
             assert err <= 4, (name, x, err)
 
 
+@pytest.mark.parametrize("name", ["j0", "j1", "y0", "y1"])
+def test_scipy_amos_not_cephes_at_large_arguments(name):
+    """For Python: scipy.special.jv/yv (AMOS) hold 4 ulp × max(1, |x f'/f|) at large x; the Cephes j0 … y1 are off
+    by over 1e5 ulp at x = 3.3758e8 (as if x were rounded: docs/kernel-accuracy.md, "Bessel functions")."""
+    from scipy import special
+    order = int(name[1])
+    amos = (lambda x: special.jv(order, x)) if name[0] == "j" else (lambda x: special.yv(order, x))
+    cephes = getattr(special, name)
+    with mp.workdps(40):
+        for x in (30.5, 1234.5678, 98765.4321, 2.0e6 + 0.3, 3.3758e8):
+            X = mp.mpf(x)
+            ref = MP[name](X)
+            kappa = max(1.0, float(abs(X * MP_DIFF[name](X) / ref)))
+            assert float(abs(mp.mpf(amos(x)) - ref) / math.ulp(float(ref))) <= 4 * kappa, (name, x)
+        ref = MP[name](mp.mpf(3.3758e8))
+        assert float(abs(mp.mpf(cephes(3.3758e8)) - ref) / math.ulp(float(ref))) > 1e5
+
+
 # ---------------------------------------------------------------- the forms in (u, q)
 def test_end_gap_is_x1_minus_x0_without_cancellation():
     x0, x1 = kf.arguments()
