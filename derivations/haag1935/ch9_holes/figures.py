@@ -2,7 +2,7 @@
 
 The printed (346), the derived (346) and the truth (G_2 = ∫ w²/|M| ds on the shot blade, :mod:`.rhombus_truth`, no
 Bessel function) at ω, λ fixed, k from 10⁻⁸ to 10³, on log axes; a curve for the emitted kernel of (346), which is
-drawn once one is emitted (none is today: the caption says so).
+drawn once one is emitted (none is today: the engine's note under the figure says so, and the caption why).
 """
 from __future__ import annotations
 
@@ -50,7 +50,11 @@ G2_RHOMBUS = Figure(
              "sensitivity integral G₂ of (346) against k. The printed (346) is wrong (a finding: its terms ω²/k and "
              "½(D₁/D + D'₁/D') are not lengths): it grows like (ω² − 1)/k as k → 0, where the derived form and the "
              "truth tend to the uniform blade's G₂. The derived form, evaluated at enough digits, agrees with the "
-             "truth; in double precision it loses about log10(1/k) digits as k → 0 (the Bessel terms cancel). The blade stays stable (β₁ < 0, (304)) for every k: "
+             "truth; in double precision it loses about log10(1/k) digits as k → 0: the arguments x₀ ~ 2ω/k of the Bessel "
+             "functions are rounded (a phase error of x₀·2⁻⁵³) and the terms of (346) cancel (those of order 1/k). "
+             "With the arguments as double-doubles, v₀, w₀, w_λ hold to a few ulp down to k = 1e-8, but (346) still "
+             "cancels: no kernel of it is emitted yet (issue #14). "
+             "The blade stays stable (β₁ < 0, (304)) for every k: "
              "at ω, λ fixed the hole only stiffens it away from its middle, so there is no largest stable k; the "
              "axis stops at k = 1000 (M at the ends 601 M₀)."),
     x=Axis("k", log=True, lo=1e-8, hi=1e3), y=Axis("G_2", log=True),
