@@ -1,0 +1,33 @@
+"""Haag 1935, chapter II: the kernels of the designer's coefficients of the uniform short blade (issue #12).
+
+Each is a function of u = λ/√M alone (:mod:`.designer`), declared on u ∈ [1e-6, 700]; the period's change is
+the coefficient times a power of λ/a (and of θ0, i, j or m'/m), which the caller multiplies in.  They hold for
+the short blade (λ ≪ a, K → 1) of the direct pendulum; the inverted pendulum (a < 0) is outside them: it needs
+a + w_λ > 0 (40) with a < 0, i.e. |a| < λ/(u th u) < λ, where λ/a is not small.  The damping per period of
+n°42 for the uniform blade is Γ_{p+q+1}(u, k) of (166) times constants (g_{p+q} = a_pq G_{p+q+1} (140), G_n of
+(163)), emitted in chapter III for n = 2…5.
+
+The derived forms cancel as u → 0 (terms of order 1/u⁴ … 1/u² in th(u/2) and 1/sh u leave an O(1) limit); the
+emitter's series pieces handle it.  c_Q takes F of (170) at K = 1: the over-contract points of F's kernel
+(issue #11) lie near the stationary points of its quartic in K, which K = 1 does not reach.
+"""
+from __future__ import annotations
+
+from pendsym.result import KernelSpec
+
+from ..ch3_uniform.kernels import NAIVE, U_ARG
+
+
+def kernel(doc: str) -> KernelSpec:
+    return KernelSpec(args=(U_ARG,), naive_defs=NAIVE, doc=doc)
+
+
+ISOCHRONISM_KERNEL = kernel("c_Q = (a/λ)(Q'/Q − 1), the isochronism coefficient of the short uniform blade: "
+                            "ΔT/T = (θ0²/16)(1 + (λ/a)c_Q) (244); c_Q → −7/(4u) as u → ∞ (245).")
+CLAMPING_KERNELS = {m: kernel(f"c_{m}, the coefficient of {m[0]}{m[1] if m[1] != m[0] else '²'} in the clamping "
+                              "error of the short uniform blade: ΔT/T = (λ/a)(c_ii i² + c_ij ij + c_jj j²) (249).")
+                    for m in ("ii", "ij", "jj")}
+INERTIA_KERNEL = kernel("c_I, the blade's inertia for the short uniform blade: ΔT/T = (m'/m)(λ/a)²c_I (251); "
+                        "c_I → 1/6 as u → ∞ (252).")
+WEIGHT_KERNEL = kernel("c_J, the blade's weight for the short uniform blade: ΔT/T = (m'/m)(λ/a)c_J (253); "
+                       "c_J → −1/4 as u → ∞ (254).")
