@@ -10,6 +10,7 @@ from . import ch2_clamping, ch2_dissymmetry, ch2_perturbations
 from .ch2_general import table_designer
 from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
 from . import ch7_clamping, ch7_dissymmetry, ch7_isochronism, ch7_mass
+from .ch2_general import figures as ch2_figures
 from .ch7_gravity import figures as ch7_figures
 from .ch8_inverted import figures as ch8_figures
 from .ch9_holes import figures as ch9_figures
@@ -110,5 +111,5 @@ MEMOIR = Memoir(
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,
-    figures=ch7_figures.FIGURES + ch8_figures.FIGURES + ch9_figures.FIGURES,
+    figures=ch2_figures.FIGURES + ch7_figures.FIGURES + ch8_figures.FIGURES + ch9_figures.FIGURES,
 )
