@@ -22,7 +22,7 @@ from __future__ import annotations
 import mpmath as mp
 import sympy as sp
 
-from pendsym import checks
+from pendsym import checks, verify
 
 from ..common import rid
 from ..symbols import u
@@ -167,3 +167,36 @@ def clamping_check(monomial: str) -> checks.Order:
                              f"{reading}, P(i, j) = (a/λ)Q1/Q (134), Q1 of (133) at the exact modes with i' from j "
                              "of (117), h (127), h' (132), F_2 (79) by quadrature on the shot blade at the mode's K",
                              inputs)
+
+
+# ---------------------------------------------------------------- the gravity pendulum (chapters VII–VIII)
+GRAVITY_WEIGHT, INVERTED_WEIGHT = rid(293, "weight"), rid(320, "weight")
+
+
+def gravity_weight_coefficient(deps, inverted: bool = False) -> sp.Expr:
+    """c = ε(m/m')ΔT/T of (293) (direct) or (320) (inverted): (136) for the gravity pendulum near its critical
+    distance, a = a1 ± ελ, ΔT/T = (m'/(mε))c."""
+    dT = deps[INVERTED_WEIGHT if inverted else GRAVITY_WEIGHT].derived
+    n = _named(dT)
+    return _of_u(sp.simplify(n["varepsilon"] * n["m"] / n["m'"] * dT), "c of (293)/(320)")
+
+
+def gravity_weight_check(inverted: bool = False) -> checks.Order:
+    """ε(ΔT/T)/(m'/m) of the exact blade with mass (pendsym.massive_blade) at a = a1 ± ελ, u = 2 (direct) or u = 1
+    (inverted), against c: residual O(ε) (chapter VII's truth, :func:`..ch7_mass.truth.mass_order`)."""
+    from ..ch7_mass import truth as mass
+    key, sign = ("u=1", -1) if inverted else ("u=2", 1)
+    ratio = mp.mpf(mass.MASS_RATIO.p) / mass.MASS_RATIO.q
+
+    def truth(p, dps):
+        with mp.workdps(dps + 10):
+            return mass.period_change(key, sign, mp.nstr(mp.mpf(p), 20), "weight", dps) * mp.mpf(p) / ratio
+
+    def at(expr, p):
+        return verify.value_at(expr, mass.blade_numbers(key, sign, checks.DPS))
+    return checks.Order(param="varepsilon", values=mass.eps_values, truth=truth, at=at, expected=1,
+                        truth_desc=mass.MODEL.format(what="its weight in the tension (no inertia)",
+                                                     sign="−" if inverted else "+")
+                        + f"; ε(ΔT/T)/(m'/m); blade {key}, {'inverted (M < 0, g < 0)' if inverted else 'direct'}",
+                        params=(("blade", key), ("m'/m", "1e-20"), ("R", mass.gravity.R_VALUE),
+                                ("g", str(sign * float(mass.gravity.G_VALUE)))))

@@ -13,7 +13,7 @@ emitter's series pieces handle it.  c_Q takes F of (170) at K = 1: the over-cont
 """
 from __future__ import annotations
 
-from pendsym.result import KernelSpec
+from pendsym.result import KernelArg, KernelSpec
 
 from ..ch3_uniform.kernels import NAIVE, U_ARG
 
@@ -31,3 +31,14 @@ INERTIA_KERNEL = kernel("c_I, the blade's inertia for the short uniform blade: �
                         "c_I → 1/6 as u → ∞ (252).")
 WEIGHT_KERNEL = kernel("c_J, the blade's weight for the short uniform blade: ΔT/T = (m'/m)(λ/a)c_J (253); "
                        "c_J → −1/4 as u → ∞ (254).")
+
+# the gravity pendulum near its critical distance (chapters VII–VIII): ΔT/T = (m'/(mε))c, a = a1 ± ελ
+GRAVITY_WEIGHT_KERNEL = kernel("c = −(1/u² − U_1²)/8, the blade's weight for the gravity pendulum on a uniform blade, "
+                               "direct suspension: ΔT/T = (m'/(mε))c (293), a = a1 + ελ; c → −1/24 as u → 0, "
+                               "c ~ −1/(8u²) as u → ∞.")
+INVERTED_U_ARG = KernelArg("u", 1e-6, 3.0, log=True)
+INVERTED_WEIGHT_KERNEL = KernelSpec(args=(INVERTED_U_ARG,), naive_defs=NAIVE,
+                                    doc="c = −(1/u² − 1/sin²u)/8, the blade's weight for the inverted gravity "
+                                        "pendulum (a < 0 side: g → −g, n°103): ΔT/T = (m'/(mε))c (320), a1 − a = ελ; "
+                                        "the first window of stability, 0 < u < π (309), declared up to u = 3; "
+                                        "c → −1/24 as u → 0 and → +∞ as u → π.")

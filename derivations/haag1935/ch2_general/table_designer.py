@@ -33,4 +33,17 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(136, "c_uniform"), "c_J = (m/m')(a/λ)ΔT/T, the blade's weight, the short uniform blade",
              src("n°37, 81", None), "c_J", designer.weight_coefficient, deps=(designer.WEIGHT,),
              check=designer.weight_check(), kernel=kernels.WEIGHT_KERNEL, note=NOTE.format(eq="(253)")),
+        Spec(rid(136, "c_gravity_uniform"), "c = ε(m/m')ΔT/T, the blade's weight, the gravity pendulum on a uniform "
+             "blade (direct)", src("n°37, 96", None), "c", designer.gravity_weight_coefficient,
+             deps=(designer.GRAVITY_WEIGHT,), check=designer.gravity_weight_check(),
+             kernel=kernels.GRAVITY_WEIGHT_KERNEL,
+             note="Derived only: (293)'s derived form times ε m/m'. Judged against the exact blade with mass "
+                  "(pendsym.massive_blade) at a = a1 + ελ, u = 2, by the fitted order of the residual in ε."),
+        Spec(rid(136, "c_inverted_uniform"), "c = ε(m/m')ΔT/T, the blade's weight, the inverted gravity pendulum on a "
+             "uniform blade", src("n°37, 103", None), "c",
+             lambda deps: designer.gravity_weight_coefficient(deps, inverted=True),
+             deps=(designer.INVERTED_WEIGHT,), check=designer.gravity_weight_check(inverted=True),
+             kernel=kernels.INVERTED_WEIGHT_KERNEL,
+             note="Derived only: (320)'s derived form times ε m/m'. Judged against the exact inverted blade with mass "
+                  "(M < 0, g < 0) at a = a1 − ελ, u = 1, by the fitted order of the residual in ε."),
     )
