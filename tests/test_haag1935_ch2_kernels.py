@@ -35,7 +35,7 @@ NAMES = ("eq112_c_uniform", "eq134_c_ii_uniform", "eq134_c_ij_uniform", "eq134_c
 HI = {"eq136_c_inverted_uniform": 3.0}       # the first window of the inverted blade, 0 < u < π; the rest: 700
 
 
-@functools.lru_cache(maxsize=64)
+@functools.lru_cache(maxsize=None)     # every point's blade and its two neighbours (κ), shared by the kernels
 def shot(u: float, sign: int = 1) -> blade.BladeSolution:
     """The uniform blade λ = 1, M = ±1/u² (u a double, taken exactly; −: the inverted blade, g → −g)."""
     return blade.solve(blade.Blade(sp.Integer(1), sign / sp.Rational(u) ** 2), DPS)
@@ -149,18 +149,20 @@ def test_a_kernel_scaled_by_3e_15_fails(emitted):
         assert any(over), name
 
 
-# the switches of the emitted pieces (0.125, 3, 5.5) with the doubles beside them, the audit's worst points, the
-# ends of the domain (1e-6; 700 and 100 by the thin forms)
+# the switches of the emitted pieces (0.125, 3, 5.5 with the doubles beside them; 0.25 and 1.5 alone: the audit
+# probes each switch's neighbours, and the knots 8 … 13 of c_I and c_jj, whose blade quadratures cost seconds), the
+# audit's worst points, the ends (1e-6; 700 and 100 by the thin forms)
 SWITCHES = (0.125, 3.0, 5.5)
-SLOW_US = (1e-6, 1e-3, 0.05, 0.7, 1.0, 2.9, 3.1022358254159927, 3.2932237168129066, 2.714036657697866,
-           2.9947213090311866, 9.0, 30.420653815990644, 100.0, 671.495306837526, 700.0)
+KNOTS = (0.25, 1.5)
+SLOW_US = (1e-6, 1e-3, 0.05, 0.7, 1.0, 1.5264638674236086, 2.9, 3.1022358254159927, 3.2932237168129066, 2.714036657697866,
+           2.9947213090311866, 100.0, 671.495306837526, 700.0)
 
 
 @pytest.mark.slow
 def test_kernels_hold_the_contract(emitted):
     """Every kernel within 4 ulp × max(1, κ) of its reference across u ∈ [1e-6, 700], at the switches and the
     audit's worst points (c_Q grows as −1/u² as u → 0: its κ stays near 2)."""
-    points = SLOW_US + tuple(x for s in SWITCHES for x in (math.nextafter(s, 0), s, math.nextafter(s, 9)))
+    points = SLOW_US + KNOTS + tuple(x for s in SWITCHES for x in (math.nextafter(s, 0), s, math.nextafter(s, 9)))
     for name in NAMES:
         for u in (u for u in points if u <= HI.get(name, 700.0)):
             value, kappa = reference(name, u)
