@@ -125,11 +125,11 @@ def test_the_reference_blade_is_the_uniform_blade():
             assert abs(sol.w0 - 1 / (u * mp.sinh(mp.mpf(u)))) < mp.mpf(10) ** -25
 
 
-QUICK_US = (0.3, 2.0)
+QUICK_US = (2.0,)      # one cheap blade (its neighbours for κ): the slow test covers the domain
 
 
 def test_kernels_hold_the_contract_quick(emitted):
-    """Every kernel within 4 ulp × max(1, κ) of the blade's reference at two points (cheap blades)."""
+    """Every kernel within 4 ulp × max(1, κ) of the blade's reference at u = 2 (a cheap blade)."""
     for name in NAMES:
         for u in QUICK_US:
             value, kappa = reference(name, u)
@@ -138,7 +138,7 @@ def test_kernels_hold_the_contract_quick(emitted):
 
 
 def test_a_kernel_scaled_by_3e_15_fails(emitted):
-    """The test can fail: each kernel times 1 + 3e-15 is over the bound at one of the quick points (κ ≈ 1 there,
+    """The test can fail: each kernel times 1 + 3e-15 is over the bound at the quick point (κ ≈ 1 there,
     3e-15 relative is 13 ulp or more)."""
     for name in NAMES:
         fn = emitted[name]["Python"]

@@ -10,6 +10,13 @@ n°42 for the uniform blade is Γ_{p+q+1}(u, k) of (166) times constants (g_{p+q
 The derived forms cancel as u → 0 (terms of order 1/u⁴ … 1/u² in th(u/2) and 1/sh u leave an O(1) limit); the
 emitter's series pieces handle it.  c_Q takes F of (170) at K = 1: the over-contract points of F's kernel
 (issue #11) lie near the stationary points of its quartic in K, which K = 1 does not reach.
+
+The gravity pendulum near its critical distance (chapters VII–VIII) gives the blade's weight as (m'/(mε))c, c of
+u alone, for the direct blade (293) and the inverted one (320) (first window 0 < u < π, declared to u = 3).
+
+Audit (session 9, ≥ 20,000 points each, worst ulp/max(1, κ), Python / C): c_Q 2.74 / 2.51 (u = 3.293), c_ii 1.74
+(u = 30.42), c_ij 1.20 / 1.17 (u ≈ 2.7), c_jj 1.42 / 1.62 (u = 2.995), c_I 2.35 / 2.48 (u = 671 / 65.6), c_J 3.38
+(u = 3.102), gravity c 1.0 (u = 4.01), inverted c 2.17 (u = 1.526); all but c_Q accept u down to 0.
 """
 from __future__ import annotations
 
