@@ -22,6 +22,7 @@ from typing import Callable, Mapping, Sequence
 
 import mpmath as mp
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from . import keys, verify
 
@@ -150,15 +151,20 @@ def _float(value) -> float | None:
 
 
 def _form_points(curve: Curve, expr: sp.Expr, dps: int) -> tuple:
-    syms = sorted(expr.free_symbols, key=lambda s: s.name)
-    fn = verify.lambdify_mp(expr, syms)
+    # a form holding applied undefined functions (F(2) …) takes their values from env(x), keyed by
+    # the applied function itself (verify.value_at)
+    apps = sorted(expr.atoms(AppliedUndef), key=sp.srepr)
+    stand = [sp.Dummy() for _ in apps]
+    expr = expr.xreplace(dict(zip(apps, stand)))
+    syms = sorted(expr.free_symbols - set(stand), key=lambda s: s.name)
+    fn = verify.lambdify_mp(expr, [*syms, *stand])
     out = []
     with mp.workdps(dps):
         for p in curve.points:
             x = mp.mpf(p)
             env = curve.env(x)
             try:
-                y = fn(*(mp.mpf(env[s.name]) for s in syms))
+                y = fn(*(mp.mpf(env[s.name]) for s in syms), *(mp.mpf(env[ap]) for ap in apps))
             except (ZeroDivisionError, ValueError):
                 y = None
             out.append((float(x), _float(y)))

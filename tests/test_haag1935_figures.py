@@ -1,6 +1,6 @@
-"""Haag 1935's figures (chapters VII, VIII, IX): the data each one draws, checked against what is found
+"""Haag 1935's figures (chapters II, VII, VIII, IX): the data each one draws, checked against what is found
 independently of the figure (roots by findroot, the chapter's other Results), so that a figure that draws
-the wrong thing fails here."""
+the wrong thing fails here.  Chapter II's own data: test_haag1935_ch2_figures.py."""
 import math
 
 import mpmath as mp
@@ -29,9 +29,10 @@ def series(plots, fig_id, label):
 
 def test_the_memoir_registers_one_figure_per_chapter_each_after_a_result_of_it(plots):
     ids = {s.id for s in MEMOIR.specs}
-    assert [f.id for f in MEMOIR.figures] == ["haag1935.fig.sensitivity", "haag1935.fig.windows",
-                                              "haag1935.fig.rhombus_G2"]
-    assert [f.place for f in MEMOIR.figures] == ["haag1935.eq264.G", "haag1935.eq309.weights", "haag1935.eq346.G2"]
+    assert [f.id for f in MEMOIR.figures] == ["haag1935.fig.period_amplitude", "haag1935.fig.sensitivity",
+                                              "haag1935.fig.windows", "haag1935.fig.rhombus_G2"]
+    assert [f.place for f in MEMOIR.figures] == ["haag1935.eq112.Qp", "haag1935.eq264.G", "haag1935.eq309.weights",
+                                                 "haag1935.eq346.G2"]
     assert all(f.place in ids for f in MEMOIR.figures)
 
 

@@ -7,8 +7,10 @@ from pendsym.memoir import Memoir, Section, headings_by
 
 from . import ch1_blade, ch1_launch, ch1_motion, ch1_shape, ch1_variations, ch2_general, ch3_uniform
 from . import ch2_clamping, ch2_dissymmetry, ch2_perturbations
+from .ch2_general import table_designer
 from . import ch4_thread, ch5_point, ch6_short_blade, ch7_gravity, ch8_inverted, ch9_holes
 from . import ch7_clamping, ch7_dissymmetry, ch7_isochronism, ch7_mass
+from .ch2_general import figures as ch2_figures
 from .ch7_gravity import figures as ch7_figures
 from .ch8_inverted import figures as ch8_figures
 from .ch9_holes import figures as ch9_figures
@@ -41,6 +43,8 @@ CHAPTER_2 = (
     Section.of(ch2_perturbations.table_law, "Chapter II. Le Rolland's moment law, internal friction (137)–(150)"),
     Section.of(ch2_dissymmetry, "Chapter II. The dissymmetric blade, the symmetric clock, friction with clamping "
                                 "errors (151)–(155)"),
+    # derived-only coefficients of the short uniform blade, with kernels; their checks share chapter VI's modes
+    Section.of(table_designer, "Chapter II. The designer's coefficients of the short uniform blade", shared=True),
 )
 CHAPTER_3 = _of(ch3_uniform)
 CHAPTER_4 = (Section.of(ch4_thread, "Chapter IV. The thread as the limit u → ∞ of the uniform blade (184)–(197)"),)
@@ -108,5 +112,5 @@ MEMOIR = Memoir(
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,
-    figures=ch7_figures.FIGURES + ch8_figures.FIGURES + ch9_figures.FIGURES,
+    figures=ch2_figures.FIGURES + ch7_figures.FIGURES + ch8_figures.FIGURES + ch9_figures.FIGURES,
 )
