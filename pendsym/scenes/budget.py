@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import mpmath as mp
 import sympy as sp
 
-from .. import cache, keys, registry
+from .. import cache, keys, registry, verify
 from ..result import Result
 from ..scene import SceneError
 from . import schema
@@ -82,7 +82,10 @@ def instrument(sc: schema.Scene) -> Instrument:
     else:
         a = bob.a
     if isinstance(sus, schema.Blade):
-        extra = {"blade_length": sus.length, "blade_EI": sus.E * sus.width * sus.thickness**3 / 12}
+        extra = {"blade_length": sus.length, "blade_EI": sus.E * sus.width * sus.thickness**3 / 12,
+                 "blade_width": sus.width}
+        if sus.hole is not None:
+            extra["blade_hole"] = sus.hole.width
         if sus.density is not None:
             extra["blade_mass"] = sus.density * sus.width * sus.thickness * sus.length
     if sc.support is not None:
@@ -174,13 +177,32 @@ def _value(expr: sp.Expr, values: dict[str, float], rid: str) -> float:
             raise SceneError(f"{rid} needs the symbol {sym.name}, which the memoir's scene mapping does not give")
         subs[sym] = sp.Float(repr(float(values[sym.name])), 30)
     with mp.workdps(30):
-        val = sp.N(expr.subs(subs), 30)
+        val = _by_mpmath(expr, subs) if expr.has(*SLOW_FOR_EVALF) else sp.N(expr.subs(subs), 30)
     if not val.is_number or not val.is_real or val.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise SceneError(f"{rid} has no finite real value for this scene")
     out = float(val)
     if not math.isfinite(out):
         raise SceneError(f"{rid} = {val} for this scene: not a finite double")
     return out
+
+
+# Forms that sp.N evaluates slowly (its adaptive evalf of Bessel functions takes minutes on the large forms of a
+# holed blade) or inexactly (an integral without closed form): evaluated by mpmath at GUARD digits instead, the
+# Bessel values at fixed arguments computed once, the integral by mpmath's quadrature.
+SLOW_FOR_EVALF = (sp.Integral, sp.besselj, sp.bessely)
+GUARD = 45
+
+
+def _by_mpmath(expr: sp.Expr, subs: dict) -> sp.Float:
+    """expr at the numbers ``subs`` by mpmath at GUARD digits (:func:`pendsym.verify.value_at`); the Bessel values
+    that do not depend on an integration variable stand as symbols, computed once (not at each quadrature node)."""
+    env = {sym.name: mp.mpf(value) for sym, value in subs.items()}
+    bound = {v for i in expr.atoms(sp.Integral) for v in i.variables}
+    fixed = sorted((f for f in expr.atoms(sp.besselj, sp.bessely) if not f.free_symbols & bound), key=sp.srepr)
+    stand = {f: sp.Symbol(f"bessel_value_{n}") for n, f in enumerate(fixed)}
+    with mp.workdps(GUARD):
+        env.update({stand[f].name: verify.value_at(f, env) for f in fixed})
+        return sp.Float(verify.value_at(expr.xreplace(stand), env), 30)
 
 
 def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
@@ -207,12 +229,28 @@ def _values(eff: Effect, inst: Instrument, built: dict[str, Result]) -> dict[str
 
 def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> float:
     """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p (symbolic derivatives, 30 digits)."""
+    if expr.has(*SLOW_FOR_EVALF):
+        return _log_slope_by_mpmath(expr, values, exponents)
     out = 0.0
     for sym in expr.free_symbols:
         p = exponents.get(sym.name, 0)
         if p:
             out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / _value(expr, values, rid)
     return out
+
+
+def _log_slope_by_mpmath(expr: sp.Expr, values: dict[str, float], exponents) -> float:
+    """d log(expr)/d log g for a form :data:`SLOW_FOR_EVALF`: the derivative in t of log expr(s e^{p_s t}) at t = 0,
+    one lambdified form differentiated by mpmath (``mp.diff``, GUARD digits; no Integral in such a base)."""
+    syms = sorted(expr.free_symbols, key=lambda x: x.name)
+    f = verify.lambdify_mp(expr, syms)
+    with mp.workdps(GUARD):
+        base = [mp.mpf(values[x.name]) for x in syms]
+        powers = [mp.mpf(exponents.get(x.name, 0)) for x in syms]
+
+        def log_at(t):
+            return mp.log(f(*[b * mp.exp(p * t) for b, p in zip(base, powers)]))
+        return float(mp.diff(log_at, 0))
 
 
 def solve(sc: schema.Scene) -> Budget:
@@ -244,7 +282,7 @@ def solve(sc: schema.Scene) -> Budget:
     for eff, est in applicable:
         if eff.key in dropped:
             rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, None, abs(est), "dropped",
-                            f"estimated from the printed statement, below the tolerance"))
+                            "estimated from the printed statement, below the tolerance"))
             continue
         values = _values(eff, inst, built)
         value = _value(built[eff.result].derived_value, values, eff.result)

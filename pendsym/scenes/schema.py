@@ -43,6 +43,12 @@ class Thread(Strict):
                     "(Young's modulus × cross-section)")
 
 
+class Hole(Strict):
+    shape: Literal["rhombus"] = Field(description="a rhombus whose two opposite vertices are at the middles of the "
+                                      "blade's clamped ends (its stiffness M0(1 + k|s|) from the middle)")
+    width: float = num(1e-6, 1.0, "m", "the hole's largest width across the blade (its diagonal at the middle)")
+
+
 class Blade(Strict):
     kind: Literal["blade"]
     E: float = num(1e8, 1e13, "Pa", "Young's modulus of the blade")
@@ -53,6 +59,7 @@ class Blade(Strict):
                                                     "blade) or inverted (the bob stands on it)")
     density: float | None = num(100.0, 3e4, "kg/m^3", "density of the blade's material (for its inertia and "
                                 "weight; without it they are not estimated)", default=None)
+    hole: Hole | None = Field(None, description="a hole through the blade (an inverted blade only)")
 
 
 Suspension = Annotated[Union[Knife, Thread, Blade], Field(discriminator="kind")]
@@ -105,6 +112,13 @@ class Scene(Strict):
                     raise ValueError(f"{key} is given with an inverted blade: no Result of the engine treats the "
                                      f"inverted blade with a {'compliant support' if key == 'support' else 'length drift'}"
                                      f" (remove {key})")
+        if isinstance(sus, Blade) and sus.hole is not None:
+            if sus.mounting != "inverted":
+                raise ValueError("suspension.hole is given with a direct blade: the memoir treats the rhombus hole for "
+                                 "the inverted blade only (Haag n°107–110; make mounting \"inverted\" or remove hole)")
+            if not sus.hole.width <= 0.9 * sus.width:
+                raise ValueError(f"suspension.hole.width = {sus.hole.width:g} leaves less than a tenth of "
+                                 f"suspension.width = {sus.width:g} at the middle (expected ≤ 0.9 × width)")
         if isinstance(sus, Blade) and sus.thickness >= sus.width:
             raise ValueError(f"suspension.thickness = {sus.thickness:g} is not smaller than suspension.width = "
                              f"{sus.width:g}: not a blade")
