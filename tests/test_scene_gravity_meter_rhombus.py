@@ -116,7 +116,8 @@ def test_rhombus_gravity_meter_sensitivity_against_a_stencil_of_exact_orbits(roo
     assert abs(b.sensitivity - 2 * b.sensitivity * iso - float(S_true)) > b.sensitivity_error
 
 
-# ----------------------------------------------------------------- quick
+# ----------------------------------------------------------------- the budget (slow: ~5 s CPU to solve) and quick
+@pytest.mark.slow
 def test_the_budget_of_the_rhombus_gravity_meter(root):
     b = budget_of(root)
     rows = {r.key: r for r in b.rows}
