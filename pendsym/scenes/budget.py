@@ -13,6 +13,7 @@
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -193,16 +194,29 @@ SLOW_FOR_EVALF = (sp.Integral, sp.besselj, sp.bessely)
 GUARD = 45
 
 
-def _by_mpmath(expr: sp.Expr, subs: dict) -> sp.Float:
-    """expr at the numbers ``subs`` by mpmath at GUARD digits (:func:`pendsym.verify.value_at`); the Bessel values
-    that do not depend on an integration variable stand as symbols, computed once (not at each quadrature node)."""
-    env = {sym.name: mp.mpf(value) for sym, value in subs.items()}
+@functools.lru_cache(maxsize=32)
+def _compiled(expr: sp.Expr):
+    """(names of the free symbols, f): f(*values) evaluates expr by mpmath at the precision in force; the Bessel
+    values that do not depend on an integration variable are computed once per call (not at each quadrature node).
+    Compiled once per form (a form is evaluated again for the sensitivity)."""
     bound = {v for i in expr.atoms(sp.Integral) for v in i.variables}
     fixed = sorted((f for f in expr.atoms(sp.besselj, sp.bessely) if not f.free_symbols & bound), key=sp.srepr)
-    stand = {f: sp.Symbol(f"bessel_value_{n}") for n, f in enumerate(fixed)}
+    stand = [sp.Symbol(f"bessel_value_{n}") for n in range(len(fixed))]
+    syms = sorted(expr.free_symbols, key=lambda x: x.name)
+    values_of = verify.lambdify_mp(sp.Tuple(*fixed), syms)
+    main = verify.lambdify_mp(expr.xreplace(dict(zip(fixed, stand))), [*syms, *stand])
+
+    def f(*args):
+        return main(*args, *values_of(*args))
+    return tuple(x.name for x in syms), f
+
+
+def _by_mpmath(expr: sp.Expr, subs: dict) -> sp.Float:
+    """expr at the numbers ``subs`` by mpmath at GUARD digits (:func:`_compiled`)."""
+    names, f = _compiled(expr)
+    by_name = {sym.name: value for sym, value in subs.items()}
     with mp.workdps(GUARD):
-        env.update({stand[f].name: verify.value_at(f, env) for f in fixed})
-        return sp.Float(verify.value_at(expr.xreplace(stand), env), 30)
+        return sp.Float(f(*[mp.mpf(by_name[n]) for n in names]), 30)
 
 
 def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
@@ -241,12 +255,11 @@ def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> 
 
 def _log_slope_by_mpmath(expr: sp.Expr, values: dict[str, float], exponents) -> float:
     """d log(expr)/d log g for a form :data:`SLOW_FOR_EVALF`: the derivative in t of log expr(s e^{p_s t}) at t = 0,
-    one lambdified form differentiated by mpmath (``mp.diff``, GUARD digits; no Integral in such a base)."""
-    syms = sorted(expr.free_symbols, key=lambda x: x.name)
-    f = verify.lambdify_mp(expr, syms)
+    the compiled form (:func:`_compiled`) differentiated by mpmath (``mp.diff``, GUARD digits)."""
+    names, f = _compiled(expr)
     with mp.workdps(GUARD):
-        base = [mp.mpf(values[x.name]) for x in syms]
-        powers = [mp.mpf(exponents.get(x.name, 0)) for x in syms]
+        base = [mp.mpf(values[n]) for n in names]
+        powers = [mp.mpf(exponents.get(n, 0)) for n in names]
 
         def log_at(t):
             return mp.log(f(*[b * mp.exp(p * t) for b, p in zip(base, powers)]))
