@@ -67,17 +67,24 @@ def slope_integral(n: int, constants: dict) -> sp.Expr:
 
     On a half, w = x[A J_1 + B Y_1] (336), dw/ds = ε(dv/dx)(2ω²/(kx)) (n°107), and both halves run over
     x_0 ≤ x ≤ x_1 with |ds/dx| = 1/(dx/ds at ε = 1): the left half (s < 0, constants A', B', ε = −1) and the right
-    half (A'', B'', ε = +1).  ``constants`` maps A', B', A'', B'' to their derived forms (340), (342)."""
+    half (A'', B'', ε = +1).  The integrand is expanded in the powers of J_0(x), Y_0(x) with the constants as symbols
+    and each x-dependent part integrated once (both halves share them); then A', B', A'', B'' are replaced by their
+    derived forms ``constants`` ((340), (342))."""
     x, A, B = derivation.x, derivation.A, derivation.B
     slope_x = derivation.slope_in_x()                       # dv/dx = x[AJ_0 + BY_0]
     dxds = derivation.ds_factor()                           # ε 2ω²/(kx)
     total = sp.Integer(0)
     for sign, (first, second) in ((-1, (derivation.A1, derivation.B1)), (1, (derivation.A2, derivation.B2))):
-        slope_s = (slope_x * dxds).subs(derivation.eps, sign).subs({A: constants[first], B: constants[second]},
-                                                                   simultaneous=True)
-        integrand = slope_s**n / dxds.subs(derivation.eps, 1)          # x cancels in the product, unsimplified
-        total += sp.Integral(integrand, (x, derivation.x0, derivation.x1))
-    return total
+        slope_s = (slope_x * dxds).subs(derivation.eps, sign).subs({A: first, B: second}, simultaneous=True)
+        total += sp.expand(slope_s**n / dxds.subs(derivation.eps, 1))          # x cancels in each term
+    parts: dict = {}
+    for term in sp.Add.make_args(total):
+        factor, shape = term.as_independent(x, as_Add=False)
+        parts[shape] = parts.get(shape, 0) + factor
+    integrals = sum((sp.factor(factor) * sp.Integral(shape, (x, derivation.x0, derivation.x1))
+                     for shape, factor in sorted(parts.items(), key=lambda p: sp.default_sort_key(p[0]))),
+                    sp.Integer(0))
+    return integrals.subs(constants, simultaneous=True)
 
 
 def F2_rhombus(F2G2: sp.Expr, wl_form: sp.Expr, G2_346: sp.Expr) -> sp.Expr:
