@@ -148,3 +148,15 @@ def test_unstable_or_inconsistent_holed_scenes_are_refused(root):
     circle = dict(data_of(root)["suspension"], hole={"shape": "circle", "width": 1e-3})
     with pytest.raises(scenes.SceneError):
         budget_of(root, suspension=circle)
+
+
+def test_clamping_and_temperature_are_refused_with_the_reason(root):
+    from pendsym.scenes.schema import Scene  # noqa: F401  (the schema names the keys)
+    for key, value, reason in (("clamping", {"i": 0.001}, "need the clamps' angles"),
+                               ("temperature", {"alpha": 1e-5}, "(315)")):
+        data = data_of(root)
+        data[key] = value
+        with pytest.raises(scenes.SceneError) as exc:
+            scenes.from_data(data)
+        line = str(exc.value)
+        assert "\n" not in line and line.startswith(f"scene: {key}: not supported yet") and reason in line, line
