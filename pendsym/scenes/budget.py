@@ -150,6 +150,14 @@ def _unaccounted_pairs(kept: list[Effect], rels: dict[str, float]) -> list[tuple
     return [(x, y) for n, x in enumerate(names) for y in names[n + 1:] if frozenset((x, y)) not in given]
 
 
+@functools.lru_cache(maxsize=1)
+def results_total() -> int:
+    """How many Results the memoirs hold, remembered in the cache under the tree's key (counting them builds every
+    memoir's specs, ~1 s of derivation steps in spec tables, for a number that changes only with the sources)."""
+    key = keys.digest(("results total", keys.tree_key(registry.packages())))
+    return cache.memo(key, lambda: len(registry.all_specs()))
+
+
 def build(ids: list[str]) -> dict[str, Result]:
     """The closure of ids, each Result's forms read from the shared cache under the key a full
     derive uses (``built``, the Result's key), or derived here and stored."""
@@ -286,7 +294,7 @@ def solve(sc: schema.Scene) -> Budget:
         built = build([e.result for e in kept] + [u for e in kept for u in e.uses]) if kept else {}
     except registry.UnknownResult as exc:
         raise SceneError(f"a memoir's scene effect names {exc}") from None
-    total = len(registry.all_specs())
+    total = results_total()
     share = tol / (4 * max(1, len(kept)))
     rels: dict[str, float] = {}
     rows: list[Row] = []
