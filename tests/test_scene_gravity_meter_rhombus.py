@@ -154,7 +154,7 @@ def test_unstable_or_inconsistent_holed_scenes_are_refused(root):
 def test_clamping_and_temperature_are_refused_with_the_reason(root):
     from pendsym.scenes.schema import Scene  # noqa: F401  (the schema names the keys)
     for key, value, reason in (("clamping", {"i": 0.001}, "need the clamps' angles"),
-                               ("temperature", {"alpha": 1e-5}, "(315)")):
+                               ("temperature", {"alpha": 1e-5}, "critical distance")):
         data = data_of(root)
         data[key] = value
         with pytest.raises(scenes.SceneError) as exc:

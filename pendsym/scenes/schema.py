@@ -101,14 +101,14 @@ class Scene(Strict):
         """Inputs that contradict each other are errors (each message names the keys)."""
         sus = self.suspension
         if self.clamping is not None:
-            raise ValueError("clamping: not supported yet: Haag's clamping errors (ch. II n°31–35, ch. VI n°80, (318) for "
-                             "the inverted blade) need the clamps' angles i, i', j, which no scene effect evaluates yet "
-                             "(remove clamping; the budget lists them as not available)")
+            raise ValueError("clamping: not supported yet: the memoirs' clamping errors (listed as not available in the "
+                             "budget of a blade) need the clamps' angles i, i', j, which no scene effect evaluates yet "
+                             "(remove clamping)")
         if self.temperature is not None:
-            raise ValueError("temperature: not supported yet: Haag gives a temperature coefficient only for the gravity "
-                             "pendulum near its critical distance ((270)–(273), the inverted blade's (315)), in the "
-                             "expansions α, α' and the modulus's β, which no scene effect evaluates yet (remove "
-                             "temperature)")
+            raise ValueError("temperature: not supported yet: the memoirs give a temperature coefficient only for the "
+                             "gravity pendulum near its critical distance (listed as not available in the budget of an "
+                             "inverted blade), in the expansions α, α' and the modulus's β, which no scene effect "
+                             "evaluates yet (remove temperature)")
         if any(unicodedata.category(ch) in ("Cc", "Cf", "Cs", "Co", "Cn") for ch in self.name):
             raise ValueError("name: must be text without control or format characters")
         if isinstance(sus, Thread):
@@ -126,8 +126,8 @@ class Scene(Strict):
                                      f" (remove {key})")
         if isinstance(sus, Blade) and sus.hole is not None:
             if sus.mounting != "inverted":
-                raise ValueError("suspension.hole is given with a direct blade: the memoir treats the rhombus hole for "
-                                 "the inverted blade only (Haag n°107–110; make mounting \"inverted\" or remove hole)")
+                raise ValueError("suspension.hole is given with a direct blade: the Results treat the rhombus hole for "
+                                 "the inverted blade only (make mounting \"inverted\" or remove hole)")
             if not sus.hole.width <= 0.9 * sus.width:
                 raise ValueError(f"suspension.hole.width = {sus.hole.width:g} leaves less than a tenth of "
                                  f"suspension.width = {sus.width:g} at the middle (expected ≤ 0.9 × width)")
