@@ -51,6 +51,7 @@ bench: $(STAMP) bench-derive
 	$(BIN)/python -m pendsym.bench --out generated/bench
 	$(BIN)/python -m pendsym.solve.bench --out generated/bench
 	$(BIN)/python -m pendsym.bench_blade --out generated/bench
+	$(BIN)/python -m pendsym.scenes.bench --out generated/bench
 
 # every generated kernel, as emitted (C and Python), on >= 20,000 points with an adversarial search
 # (docs/kernel-accuracy.md); fails when a kernel is over the bound.  Needs the cache of make derive.

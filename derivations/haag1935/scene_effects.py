@@ -29,8 +29,19 @@ def _direct(inst: Instrument) -> bool:
     return inst.kind == "blade" and not inst.inverted
 
 
-def _inverted(inst: Instrument) -> bool:
+def _inverted_any(inst: Instrument) -> bool:
+    """An inverted blade, with or without a hole."""
     return inst.kind == "blade" and inst.inverted
+
+
+def _inverted(inst: Instrument) -> bool:
+    """The inverted uniform blade (chapter VIII)."""
+    return _inverted_any(inst) and inst.blade_hole is None
+
+
+def _rhombus(inst: Instrument) -> bool:
+    """The inverted blade with a rhombus hole (chapter IX, n°107–110)."""
+    return _inverted_any(inst) and inst.blade_hole is not None
 
 
 def _critical(inst: Instrument) -> float:
@@ -228,6 +239,7 @@ def effects() -> tuple[Effect, ...]:
                estimate=_inertia_estimate, symbols=_inverted_mass_symbols, relative=lambda value, i: value,
                error=lambda rel, i: abs(rel) * (_epsilon(i) + i.blade_mass / i.m), couples=("inverted_blade",),
                order=17, model="leading order in ε, first order in m'/m (relative to the linear period on the blade)"),
+        *rhombus_effects(),
     )
 
 
@@ -242,8 +254,110 @@ def pending() -> tuple[Pending, ...]:
             Pending("blade_mass", "inertia and weight of the blade (give suspension.density; λ/a ≤ 0.1)",
                     "Haag 1935, ch. II n°36–37, ch. VI n°81", lambda i: is_blade(i) and not _massive(i)),
             Pending("inverted_clamping", "clamping errors of the inverted blade (their angles are not in the scene)",
-                    "Haag 1935, ch. VIII n°103 (318)", _inverted),
+                    "Haag 1935, ch. VIII n°103 (318)", _inverted_any),
+            Pending("rhombus_mass", "inertia and weight of the blade with a rhombus hole (no Result treats them)",
+                    "Haag 1935, ch. VII n°96 (291)–(292) (not worked out for the holed blade)", _rhombus),
             Pending("inverted_mass", "inertia and weight of the inverted blade (give suspension.density)",
                     "Haag 1935, ch. VIII n°103 (319)–(320)", lambda i: _inverted(i) and not _inverted_massive(i)),
             Pending("inverted_temperature", "temperature coefficient of the gravity meter (not in the schema)",
-                    "Haag 1935, ch. VIII n°103 (315)", _inverted))
+                    "Haag 1935, ch. VIII n°103 (315)", _inverted_any))
+
+
+# ---------------------------------------------------------------- the inverted blade with a rhombus hole (chapter IX)
+RH_BETA1, RH_A1, RH_N2 = "haag1935.eq343.beta1", "haag1935.eq343.a1", "haag1935.eq343.n2"
+RH_G, RH_C = "haag1935.eq346.G", "haag1935.eq346.C"
+
+
+def _rhombus_symbols(inst: Instrument) -> dict[str, float]:
+    """ω = 1/√M0, k, λ and x_0 = 2ω/k, x_1 = x_0√(1 + kλ/2) of (334); a, R, g; θ0 for (283)."""
+    omega, k, lam = inst.hole_M0 ** -0.5, inst.hole_k, inst.blade_length
+    x0 = 2 * omega / k
+    return {"omega": omega, "k": k, "lambda": lam, "x_0": x0, "x_1": x0 * math.sqrt(1 + k * lam / 2),
+            "a": inst.a, "R": inst.R, "g": inst.g, "theta_0": inst.alpha}
+
+
+def _rhombus_printed_ends(inst: Instrument) -> tuple[float, float]:
+    """(β1, a1) from v0 and wλ of (343) as printed (ratios of D's: the scale of Y_n cancels), in double precision:
+    the refusal's guard and the estimates only (the values come from the Results)."""
+    import mpmath as mp
+    sym = _rhombus_symbols(inst)
+    x0, x1, k, om2 = sym["x_0"], sym["x_1"], sym["k"], sym["omega"] ** 2
+    J, Y = mp.besselj, mp.bessely
+    D = Y(1, x0) * J(0, x1) - Y(0, x1) * J(1, x0)
+    Dp = Y(0, x0) * J(0, x1) - Y(0, x1) * J(0, x0)
+    D1 = Y(1, x0) * J(1, x1) - J(1, x0) * Y(1, x1)
+    D1p = Y(0, x0) * J(1, x1) - Y(1, x1) * J(0, x0)
+    v0 = k * x1 / (2 * om2) * D1 / D
+    wl = k * x1 / (4 * om2) * (D1p / Dp + D1 / D)
+    return float(inst.blade_length - 2 * v0), float(-wl)
+
+
+def _rhombus_epsilon(inst: Instrument) -> float:
+    return (_rhombus_printed_ends(inst)[1] - inst.a) / inst.blade_length
+
+
+def _rhombus_G(inst: Instrument) -> float:
+    """G ≈ (1/sin²u + cot u/u)/(2ε) of (314) at the blade's mean u = ∫ds/√M (an estimate: the hole's G is (346))."""
+    u = inst.blade_length * (inst.hole_M0 ** -0.5) * _mean_root(inst.hole_k * inst.blade_length / 2)
+    return (1 / math.sin(u) ** 2 + 1 / (u * math.tan(u))) / (2 * _rhombus_epsilon(inst))
+
+
+def _mean_root(q: float) -> float:
+    """The mean of (1 + q t)^(−1/2) over 0 ≤ t ≤ 1."""
+    return 2 * (math.sqrt(1 + q) - 1) / q
+
+
+def _rhombus_unstable(inst: Instrument) -> str | None:
+    """n°100: both vibrations exist iff β1 < 0 (304) and a < a1 (305)."""
+    beta1, a1 = _rhombus_printed_ends(inst)
+    if not beta1 < 0:
+        return (f"suspension: β1 = {beta1:.4g} m is not negative for this holed blade (Haag (304)): the inverted blade "
+                "cannot hold the bob; make the blade stiffer or shorter, the hole narrower, or the bob lighter")
+    if inst.a >= a1:
+        return (f"bob.a = {inst.a:g} is not below the critical distance a1 = −wλ = {a1:.6g} m of the blade with its "
+                "rhombus hole (Haag (305), (343)): the inverted pendulum is unstable")
+    term = inst.alpha**2 * _rhombus_G(inst) / 16
+    if term > MAX_AMPLITUDE_TERM:
+        return (f"amplitude = {inst.alpha:g}: θ0²G/16 ≈ {term:.3g} near the critical distance (ε = "
+                f"{_rhombus_epsilon(inst):.3g}), beyond the perturbation theory of (283) (expected ≤ {MAX_AMPLITUDE_TERM:g})")
+    return None
+
+
+def _rhombus_given(inst: Instrument, used: dict[str, float]) -> dict[str, float]:
+    """ε from a1 of the rhombus blade (312), then its G and C as the symbols of (283)."""
+    out: dict[str, float] = {}
+    if RH_A1 in used:
+        out["varepsilon"] = (used[RH_A1] - inst.a) / inst.blade_length
+    if RH_G in used:
+        out["G"] = used[RH_G]
+    if RH_C in used:
+        out["C"] = used[RH_C]
+    return out
+
+
+def _rhombus_slope(rel: float, inst: Instrument, S: float) -> tuple[float, float]:
+    """As :func:`_slope_over_epsilon`: (283) ∝ G ∝ 1/ε and ε ∝ n² to the leading order."""
+    slope = 2 * S * rel
+    return slope, abs(slope) * (_rhombus_epsilon(inst) + 1 / max(abs(2 * S), 1))
+
+
+def rhombus_effects() -> tuple[Effect, ...]:
+    return (
+        Effect("rhombus_blade", "inverted blade with a rhombus hole (slow vibration, linear)",
+               "Haag 1935, ch. IX n°107–109 (343) with ch. I (34), (36), (30), g → −g (n°100)", RH_N2,
+               applies=_rhombus, estimate=lambda i: math.inf, symbols=_rhombus_symbols,
+               relative=lambda n2, i: math.pi / math.sqrt(n2) if n2 > 0 else math.nan,
+               error=lambda rel, i: 1e-14, base=True,
+               g_exponents={"g": 1.0, "omega": 0.5, "x_0": 0.5, "x_1": 0.5},
+               sensitivity=lambda slope, i: -slope / 2, refuse=_rhombus_unstable, order=5,
+               model="linear theory of the holed inverted blade, exact for small oscillations (Bessel forms at 30 "
+                     "digits)"),
+        Effect("rhombus_isochronism", "holed inverted blade at finite amplitude (isochronism)",
+               "Haag 1935, ch. VII n°93 (283) with G, C of the rhombus blade (ch. IX (346), (284)), ε of (312)",
+               "haag1935.eq283.dT", applies=lambda i: _rhombus(i) and i.alpha > 0,
+               estimate=lambda i: -i.alpha**2 * _rhombus_G(i) / 16, symbols=_rhombus_symbols,
+               uses=(RH_A1, RH_G, RH_C), given=_rhombus_given, relative=lambda value, i: value,
+               error=lambda rel, i: abs(rel) * (_rhombus_epsilon(i) + 16 * abs(rel)), replaces=("circular",),
+               couples=("rhombus_blade",), order=15, g_slope=_rhombus_slope,
+               model="leading order in ε and first order in θ0²G (relative to the linear period on the blade)"),
+    )

@@ -87,22 +87,32 @@ def load(path: Path | str) -> schema.Scene:
     return from_data(data, f"scene {printable(str(path))}")
 
 
+def solved(sc: schema.Scene, where: str) -> Budget:
+    """:func:`solve`, an error while solving named by the scene's file as the loading errors are."""
+    try:
+        return solve(sc)
+    except SceneError as exc:
+        raise SceneError(f"{where}: {exc}") from None
+
+
 def pdf(path: Path | str, out: Path | str, data: dict | None = None) -> Path:
     """The one-page PDF of the scene's budget (see :mod:`pendsym.scenes.page`)."""
     from . import page
     data = parse(path) if data is None else data
-    sc = from_data(data, f"scene {printable(str(path))}")
-    return page.write(solve(sc), printable(sc.name or Path(path).stem), out)
+    where = f"scene {printable(str(path))}"
+    sc = from_data(data, where)
+    return page.write(solved(sc, where), printable(sc.name or Path(path).stem), out)
 
 
 def report(path: Path | str, as_json_out: bool = False, data: dict | None = None) -> str:
     """The answer and its budget, as text or JSON; everything is computed before anything is returned."""
     data = parse(path) if data is None else data
-    sc = from_data(data, f"scene {printable(str(path))}")
+    where = f"scene {printable(str(path))}"
+    sc = from_data(data, where)
     name = printable(sc.name or Path(path).stem)
 
     def answer() -> str:
-        b = solve(sc)
+        b = solved(sc, where)
         return json.dumps(as_json(b, name), indent=1, allow_nan=False) if as_json_out else text(b, name)
     # the answer is a pure function of the scene and of every source file (tree_key, computed
     # without importing a memoir): a repeated scene is read back without importing the memoirs

@@ -13,13 +13,14 @@
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
 import mpmath as mp
 import sympy as sp
 
-from .. import cache, keys, registry
+from .. import cache, keys, registry, verify
 from ..result import Result
 from ..scene import SceneError
 from . import schema
@@ -82,7 +83,10 @@ def instrument(sc: schema.Scene) -> Instrument:
     else:
         a = bob.a
     if isinstance(sus, schema.Blade):
-        extra = {"blade_length": sus.length, "blade_EI": sus.E * sus.width * sus.thickness**3 / 12}
+        extra = {"blade_length": sus.length, "blade_EI": sus.E * sus.width * sus.thickness**3 / 12,
+                 "blade_width": sus.width}
+        if sus.hole is not None:
+            extra["blade_hole"] = sus.hole.width
         if sus.density is not None:
             extra["blade_mass"] = sus.density * sus.width * sus.thickness * sus.length
     if sc.support is not None:
@@ -146,6 +150,14 @@ def _unaccounted_pairs(kept: list[Effect], rels: dict[str, float]) -> list[tuple
     return [(x, y) for n, x in enumerate(names) for y in names[n + 1:] if frozenset((x, y)) not in given]
 
 
+@functools.lru_cache(maxsize=1)
+def results_total() -> int:
+    """How many Results the memoirs hold, remembered in the cache under the tree's key (counting them builds every
+    memoir's specs, ~1 s of derivation steps in spec tables, for a number that changes only with the sources)."""
+    key = keys.digest(("results total", keys.tree_key(registry.packages())))
+    return cache.memo(key, lambda: len(registry.all_specs()))
+
+
 def build(ids: list[str]) -> dict[str, Result]:
     """The closure of ids, each Result's forms read from the shared cache under the key a full
     derive uses (``built``, the Result's key), or derived here and stored."""
@@ -174,13 +186,45 @@ def _value(expr: sp.Expr, values: dict[str, float], rid: str) -> float:
             raise SceneError(f"{rid} needs the symbol {sym.name}, which the memoir's scene mapping does not give")
         subs[sym] = sp.Float(repr(float(values[sym.name])), 30)
     with mp.workdps(30):
-        val = sp.N(expr.subs(subs), 30)
+        val = _by_mpmath(expr, subs) if expr.has(*SLOW_FOR_EVALF) else sp.N(expr.subs(subs), 30)
     if not val.is_number or not val.is_real or val.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise SceneError(f"{rid} has no finite real value for this scene")
     out = float(val)
     if not math.isfinite(out):
         raise SceneError(f"{rid} = {val} for this scene: not a finite double")
     return out
+
+
+# Forms that sp.N evaluates slowly (its adaptive evalf of Bessel functions takes minutes on the large forms of a
+# holed blade) or inexactly (an integral without closed form): evaluated by mpmath at GUARD digits instead, the
+# Bessel values at fixed arguments computed once, the integral by mpmath's quadrature.
+SLOW_FOR_EVALF = (sp.Integral, sp.besselj, sp.bessely)
+GUARD = 45
+
+
+@functools.lru_cache(maxsize=32)
+def _compiled(expr: sp.Expr):
+    """(names of the free symbols, f): f(*values) evaluates expr by mpmath at the precision in force; the Bessel
+    values that do not depend on an integration variable are computed once per call (not at each quadrature node).
+    Compiled once per form (a form is evaluated again for the sensitivity)."""
+    bound = {v for i in expr.atoms(sp.Integral) for v in i.variables}
+    fixed = sorted((f for f in expr.atoms(sp.besselj, sp.bessely) if not f.free_symbols & bound), key=sp.srepr)
+    stand = [sp.Symbol(f"bessel_value_{n}") for n in range(len(fixed))]
+    syms = sorted(expr.free_symbols, key=lambda x: x.name)
+    values_of = verify.lambdify_mp(sp.Tuple(*fixed), syms)
+    main = verify.lambdify_mp(expr.xreplace(dict(zip(fixed, stand))), [*syms, *stand])
+
+    def f(*args):
+        return main(*args, *values_of(*args))
+    return tuple(x.name for x in syms), f
+
+
+def _by_mpmath(expr: sp.Expr, subs: dict) -> sp.Float:
+    """expr at the numbers ``subs`` by mpmath at GUARD digits (:func:`_compiled`)."""
+    names, f = _compiled(expr)
+    by_name = {sym.name: value for sym, value in subs.items()}
+    with mp.workdps(GUARD):
+        return sp.Float(f(*[mp.mpf(by_name[n]) for n in names]), 30)
 
 
 def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
@@ -207,12 +251,27 @@ def _values(eff: Effect, inst: Instrument, built: dict[str, Result]) -> dict[str
 
 def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> float:
     """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p (symbolic derivatives, 30 digits)."""
+    if expr.has(*SLOW_FOR_EVALF):
+        return _log_slope_by_mpmath(expr, values, exponents)
     out = 0.0
     for sym in expr.free_symbols:
         p = exponents.get(sym.name, 0)
         if p:
             out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / _value(expr, values, rid)
     return out
+
+
+def _log_slope_by_mpmath(expr: sp.Expr, values: dict[str, float], exponents) -> float:
+    """d log(expr)/d log g for a form :data:`SLOW_FOR_EVALF`: the derivative in t of log expr(s e^{p_s t}) at t = 0,
+    the compiled form (:func:`_compiled`) differentiated by mpmath (``mp.diff``, GUARD digits)."""
+    names, f = _compiled(expr)
+    with mp.workdps(GUARD):
+        base = [mp.mpf(values[n]) for n in names]
+        powers = [mp.mpf(exponents.get(n, 0)) for n in names]
+
+        def log_at(t):
+            return mp.log(f(*[b * mp.exp(p * t) for b, p in zip(base, powers)]))
+        return float(mp.diff(log_at, 0))
 
 
 def solve(sc: schema.Scene) -> Budget:
@@ -235,7 +294,7 @@ def solve(sc: schema.Scene) -> Budget:
         built = build([e.result for e in kept] + [u for e in kept for u in e.uses]) if kept else {}
     except registry.UnknownResult as exc:
         raise SceneError(f"a memoir's scene effect names {exc}") from None
-    total = len(registry.all_specs())
+    total = results_total()
     share = tol / (4 * max(1, len(kept)))
     rels: dict[str, float] = {}
     rows: list[Row] = []
@@ -244,7 +303,7 @@ def solve(sc: schema.Scene) -> Budget:
     for eff, est in applicable:
         if eff.key in dropped:
             rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, None, abs(est), "dropped",
-                            f"estimated from the printed statement, below the tolerance"))
+                            "estimated from the printed statement, below the tolerance"))
             continue
         values = _values(eff, inst, built)
         value = _value(built[eff.result].derived_value, values, eff.result)

@@ -43,6 +43,8 @@ class Instrument:
     blade_length: float | None = None
     blade_EI: float | None = None
     blade_mass: float | None = None        # m' = density × width × thickness × length, when the density is given
+    blade_hole: float | None = None        # the width of a rhombus hole at the middle (its vertices at the clamps)
+    blade_width: float | None = None
     support_K: float | None = None
     support_M: float = 0.0
     drift_rate: float | None = None        # dl/dt, m/s
@@ -69,6 +71,16 @@ class Instrument:
     def blade_short(self) -> float:
         """λ/a, the small parameter of the short blade."""
         return self.blade_length / self.a
+
+    @property
+    def hole_M0(self) -> float:
+        """M0 = EI/(mg) at the middle of a blade with a rhombus hole (I ∝ the width left there)."""
+        return self.blade_M * (1 - self.blade_hole / self.blade_width)
+
+    @property
+    def hole_k(self) -> float:
+        """k of M = M0(1 + k|s|): the width grows linearly from the middle to the full width at s = ±λ/2."""
+        return 2 * self.blade_hole / (self.blade_length * (self.blade_width - self.blade_hole))
 
     @property
     def blade_u(self) -> float:

@@ -22,12 +22,14 @@ from __future__ import annotations
 from types import ModuleType
 
 from . import rectangle_table, rhombus_table_ends, rhombus_table_functions, rhombus_table_small
+from . import rhombus_table_scene
 
 SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (rectangle_table, "Chapter IX. The rectangular hole (321)–(333) and the stability remark of n°106"),
     (rhombus_table_functions, "Chapter IX. The rhombus hole: Bessel's equation and the constants (334)–(342)"),
     (rhombus_table_ends, "Chapter IX. The rhombus hole: end values, (345) and G_2 (343)–(346)"),
     (rhombus_table_small, "Chapter IX. The rhombus hole for a small hole: series in k (not in the memoir)"),
+    (rhombus_table_scene, "Chapter IX. The rhombus hole in a gravity meter: β1, a1, n², G, C (not in the memoir)"),
 )
 
 
