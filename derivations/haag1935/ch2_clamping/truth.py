@@ -30,9 +30,12 @@ from . import derivation
 
 CASE = ("uniform", "compact")           # as chapter II's other nonlinear checks
 RATIO = mp.mpf("-0.6")                  # i' = RATIO·i
-# i: four points in geometric progression (a factor 8) at both levels, the truth confirmed at 36 digits at the first
-SEQUENCE = (lambda level: verify.geometric("0.0005", "0.004", 4))
-CONFIRM_DPS = 36
+CONFIRM_DPS = 36                        # the truth at the first i recomputed at 36 digits
+
+
+def tilts(level: str) -> list:
+    """i of the order checks: four points in geometric progression (a factor 8), at both levels."""
+    return verify.geometric("0.0005", "0.004", 4)
 TILT_TRUTH = ("pendsym.nonlinear_tilt: the exact tilted equilibrium of the large-deflection blade and the "
               "principal small oscillation about it (eigenproblem of the exact linearisation), 30 digits")
 
@@ -87,7 +90,7 @@ def order(quantity: str, expected: int, pick=None, over_Q: bool = False, to_Q1=N
         value = verify.value_at(form, env)
         return value / (env["K"] * (env["z"] - env["z'"])) if over_Q else value
     name, pend = CASE
-    return checks.Order(param="i", values=SEQUENCE, truth=_exact(quantity), at=at, expected=expected, note=note,
+    return checks.Order(param="i", values=tilts, truth=_exact(quantity), at=at, expected=expected, note=note,
                         confirm_dps=CONFIRM_DPS,
                         truth_desc=f"{TILT_TRUTH}; {name} blade, {pend} pendulum, i' = {mp.nstr(RATIO, 3)}i",
                         params=(("blade", name), ("pendulum", pend), ("i'/i", mp.nstr(RATIO, 3))))

@@ -189,7 +189,8 @@ def alpha_order() -> checks.Order:
                    **{"lambda": profiles.as_mpf(profiles.profile(ALPHA_CASE).length)})
         return verify.value_at(expr, env)
     return checks.Order(param="p", values=lambda level: verify.geometric("0.002", "0.05", 3), truth=truth, at=at,
-                        expected=4, confirm_dps=36, truth_desc=f"the exact elastica (pendsym.nonlinear_blade.end_state), {ALPHA_CASE} blade, "
+                        expected=4, confirm_dps=36,
+                        truth_desc=f"the exact elastica (pendsym.nonlinear_blade.end_state), {ALPHA_CASE} blade, "
                                    "X = 1; moments of the shot blade")
 
 
