@@ -36,6 +36,8 @@ import sympy as sp
 from . import blade as linear_blade
 from . import suspension
 
+LADDER_DPS = 15      # digits of the first root of det D (see principal_n2)
+
 
 @dataclass(frozen=True)
 class MassiveBlade:
@@ -103,15 +105,42 @@ def end_columns(mb: MassiveBlade, omega2, g, wdps: int) -> tuple:
         return tuple(tuple(state[j:j + 4]) for j in (1, 5))
 
 
+@functools.lru_cache(maxsize=64)
+def _static_columns(mb: MassiveBlade, g, wdps: int) -> tuple:
+    """:func:`end_columns` when they do not depend on ω² (no inertia, or no mass): computed once."""
+    return end_columns(mb, 0, g, wdps)
+
+
 def determinant(mb: MassiveBlade, a, R, g, omega2, wdps: int):
-    """det D(ω²): the two pendulum equations on the two fundamental solutions of the blade."""
+    """det D(ω²): the two pendulum equations on the two fundamental solutions of the blade (integrated once
+    for all ω² when the blade's inertia is not modelled or it has no mass)."""
     with mp.workdps(wdps):
         a, R, g, omega2 = (mp.mpf(x) for x in (a, R, g, omega2))
+        static = not mb.inertia or mb.mu == 0
         rows = []
-        for beta, theta, N, Y in end_columns(mb, omega2, g, wdps):
+        for beta, theta, N, Y in (_static_columns(mb, g, wdps) if static else end_columns(mb, omega2, g, wdps)):
             rows.append((omega2 * (beta + a * theta) - g * Y, -omega2 * R * R * theta + g * (N - a * Y + a * theta)))
         (p, q), (r, t) = rows
         return p * t - q * r
+
+
+def _root(mb: MassiveBlade, a, R, g, start, dps: int, scale, spread):
+    """The root of det D next to ``start`` at ``dps`` digits: the secant method (mpmath's findroot) from
+    (start, start·(1 + spread)), stopped when a step falls below 10^−(dps + 6)/2 relative (the error of the
+    next iterate is then of the order of that step times the error of the last: converged); the determinant
+    there, over ``scale``, must be below 10^−(dps + 3)."""
+    wdps = working_dps(mb, dps)
+    with mp.workdps(wdps):
+        a, R, g, start = (mp.mpf(x) for x in (a, R, g, start))
+
+        def det(x):
+            return determinant(mb, a, R, g, x, wdps) / scale
+        pair = (start, start * (1 + spread))
+        root = mp.findroot(det, pair, solver="secant", tol=mp.mpf(10) ** (-(dps + 6) / 2), verify=False,
+                           maxsteps=60)
+        if not abs(det(root)) < mp.mpf(10) ** (-(dps + 3)):
+            raise ValueError(f"massive blade: det D = {mp.nstr(det(root), 5)} at the root found")
+        return +root
 
 
 @functools.lru_cache(maxsize=64)
@@ -120,18 +149,17 @@ def principal_n2(mb: MassiveBlade, a, R, g, dps: int = 30, slowest: bool = False
 
     a, R, g are strings or exact numbers (the cache key).  The root of det D is sought next to the massless
     principal n² (pendsym.suspension.modes), which is the limit μ → 0; with ``slowest``, next to the smaller
-    massless n² of the two modes."""
-    wdps = working_dps(mb, dps)
+    massless n² of the two modes.  A precision ladder: the root at LADDER_DPS digits from the massless n², then
+    at ``dps`` digits from that one (:func:`_root`)."""
     sus = suspension.solve(mb.blade, dps)
-    with mp.workdps(wdps):
+    with mp.workdps(working_dps(mb, dps)):
         a_, R_, g_ = (suspension.number(x) for x in (a, R, g))
         pair = suspension.modes(sus, a_, R_, g_)
         n2_0 = min(md.n2 for md in pair) if slowest else pair[0].n2
-        scale = abs(determinant(mb, a_, R_, g_, n2_0, wdps)) + 1     # det is O(1) in units of g, n²
-        root = mp.findroot(lambda x: determinant(mb, a_, R_, g_, x, wdps) / scale,
-                           (n2_0, n2_0 * (1 + mp.mpf(10) ** -6)), solver="secant",
-                           tol=mp.mpf(10) ** (-2 * (dps + 4)), maxsteps=60)
-        return +root
+        low = min(dps, LADDER_DPS)
+        scale = abs(determinant(mb, a_, R_, g_, n2_0, working_dps(mb, low))) + 1   # det is O(1) in units of g, n²
+        root = _root(mb, a_, R_, g_, n2_0, low, scale, mp.mpf(10) ** -6)
+        return _root(mb, a_, R_, g_, root, dps, scale, mp.mpf(10) ** -low) if dps > low else root
 
 
 def relative_period_change(mb: MassiveBlade, a, R, g, dps: int = 30) -> mp.mpf:

@@ -29,7 +29,9 @@ antisymmetric about the quarter period; θ, β, Y, c0, N then hold the odd harmo
 quarter period: the loads at the N Chebyshev-like nodes τ_j = (2j+1)π/(4N) (τ = ωt) and Ω = ω² are the
 unknowns; the time derivatives are those of the trigonometric interpolants (exact for N harmonics),
 the residuals of the three equations at the nodes and θ(0) = θ0 close the system, solved by mpmath's
-``findroot`` (Newton, with the Jacobian from the variational equations).  The collocation converges
+``findroot`` (Newton, with the Jacobian from the variational equations) on a precision ladder: first at
+``LADDER_DPS`` digits, then by the chord method at the requested precision from that root (the cost of an
+elastica grows about as the cube of the digits; the answer is the root of the full-precision system).  The collocation converges
 geometrically in N (the orbit is analytic); :func:`period` chooses N from the amplitude and the
 precision, and :func:`orbit` exposes N for a convergence check.  The period is T = 2π/√Ω.
 
@@ -49,6 +51,9 @@ from . import cache, keys, suspension
 
 VERSION = "1"        # bump when the meaning of a cached period changes
 JACOBIANS = 2        # Newton Jacobians computed per orbit (then a chord method)
+LADDER_DPS = 12      # digits of the first stage of the precision ladder (see orbit)
+LADDER_TOL = 2       # the first stage stops at a residual of 10^−(LADDER_DPS + LADDER_TOL)
+TOL = 6              # the last stage at 10^−(dps + TOL) (the orbit is accepted below 10^−(dps + 3))
 
 
 class NoConvergence(ArithmeticError):
@@ -180,43 +185,20 @@ def _linear_guess(blade: linear_blade.Blade, a, R, g, theta0, tau, dps, mode_nam
 
 def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30, mode: str = "principal") -> Orbit:
     """The oscillation of amplitude θ0 continued from the linear ``mode`` ("principal" or "slow", see
-    :func:`_linear_guess`), by collocation at ``nodes`` nodes (see the module)."""
+    :func:`_linear_guess`), by collocation at ``nodes`` nodes (see the module).
+
+    A precision ladder: the collocation solved at ``LADDER_DPS`` digits from the linear guess
+    (:func:`_first_stage`, shared by every precision), then the chord method at ``dps`` digits from there with
+    the first stage's Jacobian (each step gains about LADDER_DPS digits: three residuals at ``dps`` digits
+    instead of six or seven).  Only the root of the ``dps``-digit system is returned (its residual is
+    tested at that precision): the first stage is a starting point."""
     wdps = working_dps(blade, dps)
+    u0, jacobian, omega2_lin = _first_stage(blade, a, R, g, theta0, nodes, mode)
     with mp.workdps(wdps):
         a, R, g, theta0 = (suspension.number(x) for x in (a, R, g, theta0))
-        tau, d1, d2, row0, d2e = _operators(nodes, wdps)
-        X0, Y0, c00, omega2_lin = _linear_guess(blade, a, R, g, theta0, tau, dps, mode)
+        problem = (blade, a, R, g, theta0, omega2_lin, nodes)
+        u, _, (X, Y, C, ends, res) = _collocate(problem, u0, dps, jacobian, dps + TOL)
         n = nodes
-        # scaled unknowns: X − 1, Y/θ0, c0/θ0, Ω/Ω_lin
-        u0 = [x - 1 for x in X0] + [y / theta0 for y in Y0] + [c / theta0 for c in c00] + [mp.mpf(1)]
-        memo, jacobians = {}, []
-
-        def evaluate(u, variations):
-            key = (tuple(u), variations)
-            if key not in memo:
-                memo.clear()
-                X = [1 + u[j] for j in range(n)]
-                Y = [theta0 * u[n + j] for j in range(n)]
-                C = [theta0 * u[2 * n + j] for j in range(n)]
-                ends = [end_state(blade, X[j], Y[j], C[j], wdps, variations) for j in range(n)]
-                memo[key] = (X, Y, C, ends, _system(ends, X, Y, u[3 * n] * omega2_lin, omega2_lin, theta0,
-                                                    a, R, g, d1, d2, row0, d2e, variations))
-            return memo[key]
-
-        def f(*u):
-            return evaluate(u, False)[4][0]
-
-        def jac(*u):
-            # Newton's Jacobian at the first two iterates, then kept (a chord method: the error is
-            # already of the order of θ0⁴ there, so each later step still gains about that factor)
-            if len(jacobians) < JACOBIANS:
-                jacobians.append(evaluate(u, True)[4][1])
-            return jacobians[-1]
-
-        tol = mp.mpf(10) ** (-(dps + 6))      # on the max-norm of the residuals (findroot's MDNewton)
-        u = mp.findroot(f, u0, J=jac, tol=tol, verify=False, maxsteps=40)
-        u = [u[i] for i in range(3 * n + 1)]
-        X, Y, C, ends, (res, _) = evaluate(u, False)
         residual = max(abs(r) for r in res) / max(g, 1)
         if not residual < mp.mpf(10) ** (-(dps + 3)):
             raise NoConvergence(f"collocation residual {mp.nstr(residual, 5)} at θ0 = {theta0}, {n} nodes")
@@ -224,6 +206,69 @@ def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30,
         return Orbit(theta0, omega2, 2 * mp.pi / mp.sqrt(omega2), n, residual, tuple(X), tuple(Y), tuple(C),
                      tuple(e.alpha for e in ends), tuple(e.beta for e in ends), tuple(e.theta for e in ends),
                      tuple(e.N for e in ends))
+
+
+@functools.lru_cache(maxsize=32)
+def _first_stage(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, mode: str):
+    """The first rung of :func:`orbit`'s ladder: the scaled unknowns (X − 1, Y/θ0, c0/θ0 at the nodes, Ω/Ω_lin)
+    solved at LADDER_DPS digits from the linear ``mode`` by Newton (:data:`JACOBIANS` Jacobians, then a chord
+    method), the Jacobian at that root (LADDER_DPS digits), and Ω_lin (the linear mode's n² at LADDER_DPS digits: the scale of Ω in every
+    rung).  Cached in the process: the orbits of one θ0 at two precisions share it."""
+    wdps = working_dps(blade, LADDER_DPS)
+    with mp.workdps(wdps):
+        a, R, g, theta0 = (suspension.number(x) for x in (a, R, g, theta0))
+        X0, Y0, c00, omega2_lin = _linear_guess(blade, a, R, g, theta0, _operators(nodes, wdps)[0], LADDER_DPS, mode)
+        u0 = [x - 1 for x in X0] + [y / theta0 for y in Y0] + [c / theta0 for c in c00] + [mp.mpf(1)]
+        problem = (blade, a, R, g, theta0, omega2_lin, nodes)
+        u, _, _ = _collocate(problem, u0, LADDER_DPS, None, LADDER_DPS + LADDER_TOL)
+        # the Jacobian at the root found: each chord step at full precision then gains about LADDER_DPS digits
+        return u, _evaluate(problem, wdps, u, True)[5], omega2_lin
+
+
+def _evaluate(problem, wdps, u, variations):
+    """(X, Y, c0, ends, residuals) at the scaled unknowns u, and the Jacobian with ``variations``."""
+    blade, a, R, g, theta0, omega2_lin, n = problem
+    with mp.workdps(wdps):
+        tau, d1, d2, row0, d2e = _operators(n, wdps)
+        X = [1 + u[j] for j in range(n)]
+        Y = [theta0 * u[n + j] for j in range(n)]
+        C = [theta0 * u[2 * n + j] for j in range(n)]
+        ends = [end_state(blade, X[j], Y[j], C[j], wdps, variations) for j in range(n)]
+        res, jac = _system(ends, X, Y, u[3 * n] * omega2_lin, omega2_lin, theta0, a, R, g, d1, d2, row0, d2e,
+                           variations)
+        return (X, Y, C, ends, res, jac) if variations else (X, Y, C, ends, res)
+
+
+def _collocate(problem, u0, dps: int, jacobian, tol_digits: int):
+    """The scaled unknowns solving the collocation at ``dps`` digits from u0 (findroot's MDNewton, stopped at a
+    residual of 10^−tol_digits), the last Jacobian used and the evaluation at the root (:func:`_evaluate`).
+    The Jacobian: with ``jacobian`` given, a chord method with it; else Newton's Jacobian at the first
+    :data:`JACOBIANS` iterates, then kept (the error is already of the order of θ0⁴ there, so each later step
+    still gains about that factor)."""
+    blade = problem[0]
+    n = problem[-1]
+    wdps = working_dps(blade, dps)
+    with mp.workdps(wdps):
+        memo, jacobians = {}, [] if jacobian is None else [jacobian] * JACOBIANS
+
+        def evaluated(u):
+            if u not in memo:
+                memo.clear()
+                memo[u] = _evaluate(problem, wdps, u, False)
+            return memo[u]
+
+        def f(*u):
+            return evaluated(u)[4]
+
+        def jac(*u):
+            if len(jacobians) < JACOBIANS:
+                jacobians.append(_evaluate(problem, wdps, u, True)[5])
+            return jacobians[-1]
+
+        tol = mp.mpf(10) ** (-tol_digits)      # on the max-norm of the residuals (findroot's MDNewton)
+        u = mp.findroot(f, [mp.mpf(x) for x in u0], J=jac, tol=tol, verify=False, maxsteps=40)
+        u = tuple(u[i] for i in range(3 * n + 1))
+        return u, jacobians[-1], evaluated(u)
 
 
 def _system(ends, X, Y, omega2, omega2_lin, theta0, a, R, g, d1, d2, row0, d2e, variations=True):

@@ -60,35 +60,64 @@ def equilibrium(blade: linear_blade.Blade, a, g, i, i_prime, dps: int = 30) -> E
     """The equilibrium with the clamp tilted by i and G off the tangent by i' (n°31–32), exactly.
 
     The pendulum at rest: X = cos i, Y = −sin i (the force on G balances its weight), and c0 solves
-    N(c0) = a(Y cos(θ(c0) + i') − X sin(θ(c0) + i')) (the moment about G), Newton from c0 = 0 with the
-    elastica's variation in c0 as derivative.
+    N(c0) = a(Y cos(θ(c0) + i') − X sin(θ(c0) + i')) (the moment about G).  A precision ladder: Newton from
+    c0 = 0 at ``nonlinear_blade.LADDER_DPS`` digits with the elastica's variation in c0 as derivative, then
+    the chord method at ``dps`` digits with that derivative (the elastica without its variations), and the
+    end's state with its Jacobian at the root found; the moment residual is tested there, at ``dps`` digits.
     """
+    low = min(dps, nonlinear_blade.LADDER_DPS)
+    c0, slope = _newton(blade, a, i, i_prime, low, 0)
+    if dps > low:
+        c0, slope = _newton(blade, a, i, i_prime, dps, c0, slope)
     wdps = nonlinear_blade.working_dps(blade, dps)
     with mp.workdps(wdps):
-        a, g, i, i_prime = (suspension.number(x) for x in (a, g, i, i_prime))
+        a, i, i_prime = (suspension.number(x) for x in (a, i, i_prime))
         X, Y = mp.cos(i), -mp.sin(i)
+        end = nonlinear_blade.end_state(blade, X, Y, c0, wdps, variations=True)
+        mismatch = _moment_mismatch(end, X, Y, a, i_prime)
+        if not abs(mismatch) < mp.mpf(10) ** (-(dps + 3)) * (1 + abs(a)):
+            raise nonlinear_blade.NoConvergence(f"tilted equilibrium: moment residual {mp.nstr(mismatch, 5)}")
+        return Equilibrium(X, Y, c0, end.alpha, end.beta, end.theta, end.N, end.jacobian)
+
+
+def _newton(blade: linear_blade.Blade, a, i, i_prime, dps: int, c0, slope=None):
+    """The clamping couple c0 of the equilibrium at ``dps`` digits from c0 and the derivative of the moment
+    mismatch there: Newton (mpmath's findroot) without ``slope``; with it, the chord method, stopped when the
+    next step is estimated below 10^−(dps + 6) from the contraction of the last two."""
+    wdps = nonlinear_blade.working_dps(blade, dps)
+    with mp.workdps(wdps):
+        a, i, i_prime = (suspension.number(x) for x in (a, i, i_prime))
+        X, Y = mp.cos(i), -mp.sin(i)
+        c0 = mp.mpf(c0)
+        tol = mp.mpf(10) ** (-(dps + 6))
+        if slope is not None:
+            last = None
+            for _ in range(12):
+                end = nonlinear_blade.end_state(blade, X, Y, c0, wdps, variations=False)
+                step = -_moment_mismatch(end, X, Y, a, i_prime) / slope
+                c0 += step
+                if step == 0 or (last is not None and abs(step) * abs(step / last) < tol):
+                    return c0, slope
+                last = step
+            raise nonlinear_blade.NoConvergence(f"tilted equilibrium: the chord method did not converge ({step})")
         memo = {}
 
-        def state(c0):
-            if c0 not in memo:
+        def state(c):
+            if c not in memo:
                 memo.clear()
-                memo[c0] = nonlinear_blade.end_state(blade, X, Y, c0, wdps, variations=True)
-            return memo[c0]
+                memo[c] = nonlinear_blade.end_state(blade, X, Y, c, wdps, variations=True)
+            return memo[c]
 
-        def mismatch(c0):
-            return _moment_mismatch(state(c0), X, Y, a, i_prime)
+        def mismatch(c):
+            return _moment_mismatch(state(c), X, Y, a, i_prime)
 
-        def slope(c0):
-            end = state(c0)
+        def derivative(c):
+            end = state(c)
             th = end.theta + i_prime
             return end.jacobian[3][2] + a * (Y * mp.sin(th) + X * mp.cos(th)) * end.jacobian[2][2]
 
-        tol = mp.mpf(10) ** (-(dps + 6))
-        c0 = mp.findroot(mismatch, mp.mpf(0), df=slope, solver="newton", tol=tol, verify=False, maxsteps=50)
-        end = state(c0)
-        if not abs(mismatch(c0)) < mp.mpf(10) ** (-(dps + 3)) * (1 + abs(a)):
-            raise nonlinear_blade.NoConvergence(f"tilted equilibrium: moment residual {mp.nstr(mismatch(c0), 5)}")
-        return Equilibrium(X, Y, c0, end.alpha, end.beta, end.theta, end.N, end.jacobian)
+        c0 = mp.findroot(mismatch, c0, df=derivative, solver="newton", tol=tol, verify=False, maxsteps=50)
+        return c0, derivative(c0)
 
 
 def linearised_matrices(eq: Equilibrium, a, R, g, i_prime):

@@ -89,3 +89,19 @@ def test_short_flexible_blade_is_a_rigid_compound_pendulum():
     # falls with it; at λ/a = 1e-3 it is below the amplitude effect θ0²/16 ≈ 6e-4 itself
     assert all(err < rel_length for err, rel_length in errs)
     assert errs[1][0] < errs[0][0] / 5
+
+
+@pytest.mark.slow
+def test_precision_ladder_returns_the_full_precision_root(monkeypatch):
+    """The orbit is the root of the full-precision collocation, not of its first rung: with the first stage at
+    12 or at 20 digits (a different start and a different chord Jacobian) the 30-digit periods agree to 30
+    digits."""
+    th = "0.002"
+    nonlinear_blade._first_stage.cache_clear()
+    T12 = nonlinear_blade.orbit(UNIFORM, *CLOCK, th, 4, 30).period
+    nonlinear_blade._first_stage.cache_clear()
+    monkeypatch.setattr(nonlinear_blade, "LADDER_DPS", 20)
+    T20 = nonlinear_blade.orbit(UNIFORM, *CLOCK, th, 4, 30).period
+    nonlinear_blade._first_stage.cache_clear()
+    with mp.workdps(40):
+        assert abs(T12 - T20) < mp.mpf("1e-30") * T12

@@ -24,6 +24,7 @@ CASE_154 = dict(BASE, i="0.03", g1="1", A="0.6", B="0.4")
 CASE_155 = dict(BASE, a="0.9", v_lambda="0.2", z="0.5", K="1.1", g1="1", A="0.6")
 STRENGTHS = ("0.0005", "0.05")          # the scale ε of g_1, A, B
 POINTS = 4
+CONFIRM_DPS = 36                        # the truth at the first point recomputed at 36 digits
 
 
 def _case(name: str) -> dict:
@@ -77,7 +78,7 @@ def order(name: str) -> checks.Order:
         env["varphi_1"] = mp.asin(-c["j"] / c["theta_0"])
         return verify.value_at(expr, env)
     case = CASE_154 if name == "154" else CASE_155
-    return checks.Order(param="ε", values=lambda level: verify.geometric(*STRENGTHS, POINTS),
+    return checks.Order(param="ε", values=lambda level: verify.geometric(*STRENGTHS, POINTS), confirm_dps=CONFIRM_DPS,
                         truth=lambda eps, dps: period_change(name, mp.nstr(mp.mpf(eps), 20), dps), at=at, expected=2,
                         truth_desc="θ1'' = −n²θ1 − (n²/Q)ε[g1θ1 − Ai + Bj] where θ = j + θ1 > 0, free elsewhere (the "
                                    "reduced equation of n°28 with the dissymmetric blade), integrated by odefun piece by "
@@ -135,6 +136,7 @@ def friction_odd_order() -> checks.Order:
                **{k: e * mp.mpf(F[k]) for k in ("a_pq", "b_pq", "a'_pq", "b'_pq")}}
         return verify.value_at(expr, env)
     return checks.Order(param="ε", values=lambda level: verify.geometric(*FRICTION_STRENGTHS, POINTS), truth=truth,
+                        confirm_dps=CONFIRM_DPS,
                         at=at, expected=2,
                         truth_desc="θ1'' = −n²θ1 − sign(θ1')(n²/Q)εC|j + θ1|^p|θ1'|^q (C = b right back, a' left out, "
                                    "b' left back, a right out; sides parted at θ = j + θ1 = 0) integrated by odefun "

@@ -9,8 +9,10 @@
 - (141) at q = 0 and n°39: the linear eigenproblem (pendsym.suspension) on the blade M(1 + a0), whose
   T/T0 − 1 must differ from the formula by O(a0²).
 
-Cost (cold): each massive-blade n² is about 0.7 s, each (141) point 0.3 s; each order check five points
-(four and the confirmation at 45 digits).
+Cost (cold): each massive-blade n² with inertia is about 1–2 s CPU (a root at 15 digits, then at 30 by the
+secant method from it: pendsym.massive_blade.principal_n2), with the weight only a single integration of the
+blade; each (141) point 0.3 s; the mass checks four roots (three points and the confirmation at 36 digits),
+the others five: (135) ≈ 7 s on the hole blade, 4 s on the uniform one, (136) ≈ 2 s.
 """
 from __future__ import annotations
 
@@ -25,9 +27,11 @@ from ..symbols import G_2
 from .derivation import a_q, g_fn, i_fn
 
 PENDULUM = "compact"
-MASSES = ("0.0001", "0.01")          # m'/m: four points in geometric progression
+MASSES = ("0.0001", "0.01")          # m'/m: three points in geometric progression (the O((m'/m)²) residual
+MASS_POINTS = 3                      # changes 10⁴-fold over them; each point with inertia is a 1–2 s root)
 YOUNG = ("0.0001", "0.01")           # ΔE/E = a0
 POINTS = 4
+CONFIRM_DPS = 36                     # the truth at the first point recomputed at 36 digits
 MASSIVE_TRUTH = ("pendsym.massive_blade: the linearised blade with {what} carrying the rigid pendulum, the principal "
                  "root of det D(ω²) (odefun shooting, findroot), T/T0 − 1 against the massless blade")
 
@@ -89,8 +93,8 @@ def mass_order(name: str, inertia: bool) -> checks.Order:
         env = dict(env, **{"m'": p, "I_lambda": p * env["I_unit"], "J": env["J_unit"]})
         return verify.value_at(expr, env)
     what = "its horizontal inertia (no weight)" if inertia else "its weight in the tension (no inertia)"
-    return checks.Order(param="m'/m", values=lambda level: verify.geometric(*MASSES, POINTS),
-                        truth=period_change(name, inertia), at=at, expected=2,
+    return checks.Order(param="m'/m", values=lambda level: verify.geometric(*MASSES, MASS_POINTS),
+                        truth=period_change(name, inertia), at=at, expected=2, confirm_dps=CONFIRM_DPS,
                         truth_desc=MASSIVE_TRUTH.format(what=what) + f"; {name} blade, {PENDULUM} pendulum",
                         params=(("blade", name), ("pendulum", PENDULUM)),
                         note="I_λ = (m'/m)∫ρy² ds and J = ∫ρ(s − x) ds by quadrature on the shot blade (ρ = μ/m'); "
@@ -197,6 +201,7 @@ def friction_order(component: int) -> checks.Order:
         return verify.value_at(expr, env)
     what = "ΔT/T = Tn/(2π) − 1" if component == 0 else "Δθ0 = θ(T) − θ0"
     return checks.Order(param="ε", values=lambda level: verify.geometric(*STRENGTHS, POINTS), truth=truth, at=at,
+                        confirm_dps=CONFIRM_DPS,
                         expected=2,
                         truth_desc="θ'' + n²θ = −sign(θ')(n²/Q)C|θ|^p|θ'|^q (the reduced equation of n°28 with a "
                                    "friction opposing the motion, C by quadrant: b right going back, a' left going out, b' left going "
