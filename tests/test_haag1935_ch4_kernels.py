@@ -1,0 +1,107 @@
+"""Chapter III's kernels at u = inf give the thread (issue #13; docs/kernel-accuracy.md, "Above hi").
+
+The reference is chapter IV's limits u → ∞ of the derived forms, taken by SymPy and checked against the shot thread
+pendulum (ch4_thread: eq184.ends, eq184.F, eq185.I_J, eq192.n2, and K of (193) with the thread's foci), not the
+kernels' far forms.  The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
+"""
+import importlib.util
+import math
+import shutil
+
+import mpmath as mp
+import pytest
+import sympy as sp
+
+from derivations.haag1935.ch4_thread import derivation as thread
+from derivations.haag1935.symbols import K
+from pendsym import stages
+from pendsym.emit import kernels as kn
+from pendsym.emit.kernels.measure import reference
+
+# kernel: (number of arguments, the thread's Result, component (None: the whole form), the other arguments' values)
+AT = {"lambda": 0.37, "K": -0.71, "m'": 2.3, "a": 0.83, "R": 0.11, "g": 9.81}
+THREAD = {
+    "eq159_v0": (2, "haag1935.eq184.ends", 0),
+    "eq159_w0": (2, "haag1935.eq184.ends", 2),
+    "eq159_wl": (2, "haag1935.eq184.ends", 3),
+    "eq159_beta1": (2, "haag1935.eq184.ends", 4),
+    "eq168_F1": (2, "haag1935.eq184.F", 0),
+    "eq169_F2": (2, "haag1935.eq184.F", 1),
+    "eq170_F": (2, "haag1935.eq184.F", 2),
+    "eq182_I": (4, "haag1935.eq185.I_J", 0),
+    "eq183_J": (3, "haag1935.eq185.I_J", 1),
+    "eq034_n2_z_uniform": (5, "haag1935.eq192.n2", None),
+    "eq036_K_uniform": (4, None, None),           # K of the thread in a, R, λ: thread_defs (the (30), (35) at the limit)
+}
+ARG_ORDER = {"eq159_v0": ("lambda", "u"), "eq159_w0": ("lambda", "u"), "eq159_wl": ("lambda", "u"),
+             "eq159_beta1": ("lambda", "u"), "eq168_F1": ("u", "K"), "eq169_F2": ("u", "K"), "eq170_F": ("u", "K"),
+             "eq182_I": ("lambda", "u", "K", "m'"), "eq183_J": ("lambda", "u", "K"),
+             "eq034_n2_z_uniform": ("a", "R", "lambda", "u", "g"), "eq036_K_uniform": ("a", "R", "lambda", "u")}
+
+
+@pytest.fixture(scope="module")
+def emitted(generated, tmp_path_factory):
+    spec = importlib.util.spec_from_file_location("ch4k_haag1935", generated / "python" / "haag1935.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    out = {name: {"Python": getattr(mod, name)} for name in THREAD if hasattr(mod, name)}
+    if shutil.which("cc"):
+        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
+        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch4k"))
+        for name in out:
+            out[name]["C"] = kn.c_callable(lib, name, THREAD[name][0])
+    return out
+
+
+@pytest.fixture(scope="module")
+def limits():
+    """{kernel: the thread's value as a SymPy expression of the other arguments}."""
+    built = stages.results(sorted({rid for _, rid, _ in THREAD.values() if rid}))
+    out = {}
+    for name, (_, rid, part) in THREAD.items():
+        if rid is None:
+            out[name] = dict(thread.thread_defs())[K]
+        else:
+            form = built[rid].derived
+            out[name] = form[part] if part is not None else form
+    return out
+
+
+def _value(expr, name):
+    """(value, κ) of the thread's expression at AT, 50 digits (κ by the contract's own differences)."""
+    syms = sorted(expr.free_symbols, key=lambda s: s.name)
+    if not syms:
+        return mp.mpf(sp.N(expr, 50)), 1.0
+    f, cond = reference(expr, syms)
+    with mp.workdps(50):
+        xs = [mp.mpf(AT[s.name]) for s in syms]
+        v = f(*xs)
+        return v, (float(cond(*xs)) if v != 0 else 1.0)
+
+
+@pytest.mark.parametrize("name", sorted(THREAD))
+def test_the_kernel_at_infinity_is_the_thread(emitted, limits, name):
+    """kernel(…, u = inf) is chapter IV's limit, within 4 ulp × max(1, κ) (exactly 0 where the limit is 0), in C
+    and Python; and u = 1e300 gives the same."""
+    assert name in emitted, f"{name} is not generated"
+    value, kappa = _value(limits[name], name)
+    for lang, fn in emitted[name].items():
+        for far in (math.inf, 1e300):
+            p = [far if a == "u" else AT[a] for a in ARG_ORDER[name]]
+            got = fn(*p)
+            assert math.isfinite(got), (name, lang, far, got)
+            if value == 0:
+                assert abs(got) < 1e-290, (name, lang, far, got)
+            else:
+                with mp.workdps(50):
+                    err = abs(mp.mpf(got) - value) / mp.mpf(math.ulp(float(value)))
+                assert err <= 4 * max(1.0, kappa) + (1e3 if far != math.inf and abs(value) < 1e-200 else 0), \
+                    (name, lang, far, got, value)
+
+
+def test_a_wrong_thread_value_would_fail(limits):
+    """The test can fail: β1 at inf is λ, and λ(1 − 2/u) at u = 1e15 (a far form read at a finite u) is 13 ulp off."""
+    value, _ = _value(limits["eq159_beta1"], "eq159_beta1")
+    wrong = AT["lambda"] * (1 - 2 / 1e15)
+    with mp.workdps(50):
+        assert abs(mp.mpf(wrong) - value) / mp.mpf(math.ulp(float(value))) > 4
