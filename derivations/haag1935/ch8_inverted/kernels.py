@@ -4,10 +4,12 @@ Stated in a, the inverted blade's n² and K have no box for a domain: both vibra
 a + wλ < 0 (305) and β1 < 0 (304), and a1 = −wλ = λ/(u tan u) (310) moves with u.  Stated in
 ε = (a1 − a)/λ (312) instead, the existence condition (305) is ε > 0 whatever u, and (304) holds on the
 whole window 0 < u < π (309, n = 0).  The domain is the box u ∈ [1e-6, π] (π: the double below π),
-ε ∈ [1e-9, 0.5], with R, λ and g as for the direct blade's kernels.  Why ε ≤ 0.5: the form takes z, the
-positive root of (30) times D = a − vλ = (λ/u)(1/sin u − uε), as 2R²D/S, which holds for D > 0; and
-D > 0 on the whole window for ε < min 1/(u sin u) = 0.5495 (at tan u = −u, u = 2.029).  A gravity meter
-works near its critical distance (ε ≪ 1; G of (314) is the principal part in ε).
+ε ∈ [1e-9, 0.25], with R, λ and g as for the direct blade's kernels.  Why ε ≤ 1/4: the form takes z,
+the positive root of (30) times D = a − vλ = λ(1/(u sin u) − ε), as 2R²D/S, which holds for D > 0, and
+D > 0 on the whole window for ε < min 1/(u sin u) = 0.5495 (at tan u = −u, u = 2.029); towards that curve
+D → 0 and the emitted form loses accuracy (make audit: 18 ulp × κ at ε = 0.5, 6.9 on random points of
+ε ∈ [0.4, 0.5], under 4 below 0.4), so the box stops at ε = 1/4, where D ≥ 0.3λ.
+A gravity meter works near its critical distance (ε ≪ 1; G of (314) is the principal part in ε).
 
 The forms are derived here by SymPy from the Results: n² of the inverted uniform blade
 (``eq034.n2_inverted``: (34), (36), (30) with u → iu, g → −g) and K of (36) built the same way, with
@@ -36,7 +38,7 @@ from ..common import rid
 from ..symbols import K, R, a, beta1, g, lam, vl, wl, z, zp
 from . import derivation
 
-EPS_INVERTED = KernelArg("varepsilon", 1e-9, 0.5, log=True)       # (312): ε = (a1 − a)/λ > 0 (305); D > 0
+EPS_INVERTED = KernelArg("varepsilon", 1e-9, 0.25, log=True)      # (312): ε = (a1 − a)/λ > 0 (305); D > 0
 
 N2_EPS_KERNEL = KernelSpec(args=(EPS_INVERTED, R_ARG, LAMBDA_ARG, U_WINDOW, G_ARG), unit="1/s^2",
                            doc="n² of the slow vibration of a pendulum on an inverted uniform blade (g → −g, u → iu), "
@@ -82,22 +84,35 @@ def _stable_parts():
     return n2, K_form, S, stable_S
 
 
+AREA = sp.Symbol("A_w", real=True)            # a + wλ, which (312) makes −ελ
+DENOM = sp.Symbol("T", positive=True)          # 2R² + S
+
+
 def _in_eps(expr: sp.Expr, S: sp.Symbol, stable_S: sp.Expr, deps) -> sp.Expr:
-    """expr (in D, P, S, a, vλ, wλ) with S stable, D and P of the rotated ends (159), u → iu (n°101), and
-    a = a1 − ελ ((312), a1 of (310)); D and P simplified as functions of u and ε."""
+    """expr (in D, P, S, a, vλ, wλ) in D, β1, A = a + wλ and Q = √(P² + 4R²D²): P = D² + β1A − R² (SymPy from
+    (30)'s coefficient), 2R² + S = (R² + D² + β1A) + Q, a sum of positive terms in the window (β1 < 0 (304),
+    A < 0 (305)), S stable; then D, β1, A of the rotated ends (159), u → iu (n°101), and a = a1 − ελ ((312),
+    a1 of (310)): A = −ελ."""
     ends = {name: derivation.rotated(deps[rid(159, str_name)].derived)
             for name, str_name in ((vl, "vl"), (beta1, "beta1"), (wl, "wl"))}
     at = {a: deps[rid(310, "a1")].derived - eps * lam}
     D_value, P_value = _scaled_quadratic()
-    D_value = sp.factor(sp.simplify(D_value.subs(ends).subs(at)))
-    P_value = sp.expand(P_value.subs(ends).subs(at))
-    P_value = sp.collect(sp.expand(sp.simplify(P_value)), [R, eps], sp.factor)
-    distance = sp.Symbol("A_w")                  # a + wλ, which (312) makes −ελ
-    expr = expr.subs(a, DIST + vl).xreplace({DIST + vl + wl: distance})
-    if expr.has(wl):
-        raise ValueError(f"a + wλ is not a factor of {expr}")
-    a_w = sp.simplify((a + wl).subs(ends).subs(at))
-    return expr.subs(S, stable_S).subs({NUM: P_value, DIST: D_value, distance: a_w})
+    P_in = sp.expand(P_value.subs(a, DIST + vl).subs(wl, AREA - DIST - vl))
+    if sp.expand(P_in - (DIST**2 + beta1 * AREA - R**2)) != 0:
+        raise ValueError(f"P is not D² + β1(a + wλ) − R²: {P_in}")
+    T_value = sp.expand(2 * R**2 + P_in) + sp.sqrt(P_in**2 + 4 * R**2 * DIST**2)
+    expr = expr.subs(a, DIST + vl).xreplace({DIST + vl + wl: AREA, 2 * R**2 + S: DENOM})
+    if expr.has(wl) or (expr.has(S) and expr.has(DENOM) is False):
+        raise ValueError(f"a + wλ or 2R² + S is not a factor of {expr}")
+    # D = λ(c − ε) and β1 = λb, c and b functions of u alone: the kernel's leaves, so that no expansion of D²
+    # in ε cancels (D is small where ε nears 1/(u sin u))
+    D_at = D_value.subs(ends).subs(at)
+    c = sp.simplify(sp.expand((D_at + eps * lam) / lam).rewrite(sp.sin))      # 1/(u sin u): no tan(u/2) + cot u
+    if c.has(eps) or sp.simplify((D_at - lam * (c - eps)).rewrite(sp.sin)) != 0:
+        raise ValueError(f"D = {D_at} is not λ(c(u) − ε)")
+    b = sp.simplify(ends[beta1] / lam)
+    values = {DIST: lam * (c - eps), beta1: lam * b, AREA: sp.simplify((a + wl).subs(ends).subs(at))}
+    return expr.subs({DENOM: T_value, S: stable_S.subs(NUM, P_in)}).subs(values)
 
 
 def n2_eps(deps) -> sp.Expr:

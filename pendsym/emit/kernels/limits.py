@@ -152,12 +152,25 @@ def far_form(expr: sp.Expr, x: sp.Symbol) -> sp.Expr | None:
         if a < b:
             return None
         rest = _cancelled((n_a / d_b).subs(x, 1 / t), t)
-        return rest.subs(t, 1 / x) * (sp.exp(-(a - b) * x / q) if a > b else 1)
-    hyper = [f for f in expr.atoms(sp.Function) if f.has(x)]
+        return _in_reciprocal(rest, t, x) * (sp.exp(-(a - b) * x / q) if a > b else 1)
+    hyper = [f for f in expr.atoms(sp.Function) if f.has(x) and not isinstance(f, sp.Piecewise)]
     if not hyper or any(not isinstance(f, (sp.tanh, sp.coth)) or not (f.args[0] / x).is_positive for f in hyper):
         return None
     rest = expr.xreplace({f: sp.Integer(1) for f in hyper}).subs(x, 1 / t)
-    return _cancelled(rest, t).subs(t, 1 / x)
+    return _in_reciprocal(_cancelled(rest, t), t, x)
+
+
+def _in_reciprocal(e: sp.Expr, t: sp.Symbol, x: sp.Symbol) -> sp.Expr:
+    """e (P(t)/Q(t)) with P and Q in Horner form in t, then t = 1/x: each level divides by x once, so no power
+    x^n is formed (x³ overflows above 5.6e102: I_λ's far form as 1/u³ failed at u = 1e150)."""
+    num, den = sp.fraction(e)
+    nested = []
+    for p in (num, den):
+        try:
+            nested.append(sp.horner(sp.expand(p), wrt=t) if p.has(t) and sp.Poly(p, t).degree() > 1 else p)
+        except sp.PolynomialError:
+            nested.append(p)
+    return (nested[0] / nested[1]).subs(t, 1 / x)
 
 
 def beyond(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: sp.Expr, domain: tuple) -> tuple | None:
