@@ -247,4 +247,30 @@ def test_the_eps_domain_keeps_the_root_positive():
     with mp.workdps(30):
         u_star = mp.findroot(lambda x: mp.tan(x) + x, 2.03)
         assert 1 / (u_star * mp.sin(u_star)) > ch8_kernels.EPS_INVERTED.hi
-        assert all(1 / (x * mp.sin(x)) > 0.5 > 2 * ch8_kernels.EPS_INVERTED.hi for x in mp.linspace(mp.mpf("1e-6"), mp.pi - mp.mpf("1e-9"), 400))
+        assert all(1 / (x * mp.sin(x)) > 2 * ch8_kernels.EPS_INVERTED.hi for x in mp.linspace(mp.mpf("1e-6"), mp.pi - mp.mpf("1e-9"), 400))
+
+
+# the worst points make audit found (scaled 3.44 for C, 2.43 for G, 2.44 for n²): C and G against the quadratures,
+# n² against the Result's derived form at 50 digits (the contract's reference; the eigenproblem truth is at λ = 1/10)
+def test_C_and_G_at_the_audit_worst_points(emitted):
+    value, kappa = kappa_of(C_reference, (1.017566226270265,))
+    for lang, fn in emitted["eq317_C"].items():
+        assert ulp_error(fn(1.017566226270265), value) <= BOUND * max(1.0, kappa), lang
+    g2, kappa_u = kappa_of(G2, (1.8191182427059926,))
+    with mp.workdps(DPS):
+        value = -g2 / (mp.mpf(4.492336668341541e-09) * LAM)
+    for lang, fn in emitted["eq314_G"].items():
+        assert ulp_error(fn(1.8191182427059926, 4.492336668341541e-09), value) <= BOUND * (kappa_u + 1), lang
+
+
+@pytest.mark.slow
+def test_n2_at_the_audit_worst_point(emitted):
+    from pendsym import stages
+    result = stages.results(["haag1935.eq034.n2_inverted_eps"])["haag1935.eq034.n2_inverted_eps"]
+    p = (0.24313618986389524, 0.2657024516246783, 1.6564097084043943, 1.827704536987043, 9.827929170558107)
+    syms = [next(s for s in result.derived.free_symbols if s.name == a.name) for a in result.spec.kernel.args]
+    f, cond = reference(result.derived, syms)
+    with mp.workdps(50):
+        value, kappa = f(*[mp.mpf(v) for v in p]), float(cond(*[mp.mpf(v) for v in p]))
+    for lang, fn in emitted["eq034_n2_inverted_eps"].items():
+        assert ulp_error(fn(*p), value) <= BOUND * max(1.0, kappa), lang
