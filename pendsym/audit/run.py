@@ -43,7 +43,7 @@ import sympy as sp
 
 from .. import pipeline, schedule, stages
 from ..emit import kernels as kn
-from ..emit.kernels.limits import LIMIT_FAR, far_values, ref_dps
+from ..emit.kernels.limits import LIMIT_FAR, far_dps, far_values, ref_dps
 from ..emit.kernels.measure import reference
 from ..result import KernelArg
 from . import points as pt
@@ -89,7 +89,8 @@ class Judge:
     def truth(self, p: tuple, extra: int = 0):
         at = [v if v != 0 or not self.zero_limit(i) else LIMIT_AT for i, v in enumerate(p)]
         far = [i for i, v in enumerate(at) if v == math.inf]           # accepted up to +inf: the limit there
-        with mp.workdps(ref_dps(at) + extra):
+        beyond = any(v > a.hi for v, a in zip(at, self.job.args))      # above hi: digits for the form's cancellation
+        with mp.workdps((far_dps([LIMIT_FAR[1] if v == math.inf else v for v in at]) if beyond else ref_dps(at)) + extra):
             if far:
                 lo_at, hi_at = list(at), list(at)
                 for i in far:
@@ -120,7 +121,8 @@ class Judge:
     def kappa(self, p: tuple) -> float:
         if any(v == math.inf for v in p):       # the limit at +inf: its κ in the other arguments, at LIMIT_FAR
             p = tuple(LIMIT_FAR[1] if v == math.inf else v for v in p)
-        with mp.workdps(ref_dps(p)):
+        beyond = any(v > a.hi for v, a in zip(p, self.job.args))
+        with mp.workdps(far_dps(p) if beyond else ref_dps(p)):
             try:
                 return float(self.cond(*[mp.mpf(x) for x in p]))
             except (ZeroDivisionError, ValueError, OverflowError):

@@ -36,6 +36,8 @@ TINY = (0.0, 5e-324, 1e-320, 1e-310) + tuple(m * 10.0 ** -k for k in range(306, 
 TRIES = 4             # seeded values of the other arguments at each tiny value
 LIMIT_AT = (1e-40, 1e-80)   # the limit at 0: the derived form at 1e-80, or 0 where it falls by 1e-30 from 1e-40
 LIMIT_FAR = (1e40, 1e80)    # the limit at +inf: the derived form at 1e80, or 0 where it falls by 1e-30 from 1e40
+FAR_DIGITS = 3              # more digits of the reference per decade of x above 1: the derived form at x = 1e60 may
+                            # cancel like x³ (Γ2 at u = 1e60 was refused against a 50-digit reference)
 FAR_DECADES = (3, 4, 5, 6, 8, 10, 12, 15, 16, 17, 20, 30, 40, 60, 80, 100, 150, 200, 250, 300, 308)
 
 
@@ -81,9 +83,16 @@ def _vanishes(f, p: list, i: int, at_points: tuple = LIMIT_AT) -> bool:
     for x in at_points:
         at = list(p)
         at[i] = x
-        with mp.workdps(ref_dps(at)):
+        with mp.workdps(far_dps(at)):
             values.append(abs(f(*[mp.mpf(v) for v in at])))
     return values[1] <= mp.mpf(10) ** -30 * values[0]
+
+
+def far_dps(p) -> int:
+    """Digits for the derived form at p: :func:`ref_dps`, plus FAR_DIGITS for each decade of its largest finite
+    coordinate above 1."""
+    big = max((abs(v) for v in p if math.isfinite(v)), default=1.0)
+    return ref_dps(p) + FAR_DIGITS * max(0, math.ceil(math.log10(max(big, 1.0))))
 
 
 def _holds(fn, f, p: list, at: list, zero: bool = False) -> bool:
@@ -95,7 +104,7 @@ def _holds(fn, f, p: list, at: list, zero: bool = False) -> bool:
         return False
     if zero:
         return math.isfinite(got) and abs(got) < 1e-300
-    with mp.workdps(ref_dps(at)):
+    with mp.workdps(far_dps(at)):
         xs = [mp.mpf(v) for v in at]
         true = f(*xs)
         if not math.isfinite(got) or not mp.isfinite(true):
