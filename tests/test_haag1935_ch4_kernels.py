@@ -127,3 +127,25 @@ def emitted_all(generated, tmp_path_factory):
         out["eq036_K_uniform"]["C"] = kn.c_callable(lib, "eq036_K_uniform", 4)
         out["eq034_n2_z_uniform"]["C"] = kn.c_callable(lib, "eq034_n2_z_uniform", 5)
     return out
+
+
+@pytest.mark.parametrize("n", [2, 3, 4, 5])
+def test_Gamma_n_at_infinity_follows_184(generated, n):
+    """(184): n·u·Γ_n tends to the bracket B_n(K) of eq184.Gn (G_n = λ(u/λ)^{n−2}Γ_n (163)), with k = K(1 − K): the
+    kernel at u = 1e300 times n·u is B_n to 1e-14, and at u = inf it is 0 (Γ_n → 0), in Python."""
+    spec = importlib.util.spec_from_file_location(f"ch4g{n}_haag1935", generated / "python" / "haag1935.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    fn = getattr(mod, f"eq166_Gamma{n}")
+    Gn = stages.results(["haag1935.eq184.Gn"])["haag1935.eq184.Gn"].derived
+    by = {s.name: s for s in Gn.free_symbols}
+    u, lam = by["u"], by["lambda"]
+    n_sym = next(s for s in Gn.free_symbols if s.name == "n")
+    B = sp.simplify((Gn.subs(n_sym, n) * n * u / (lam * (u / lam) ** (n - 2))))
+    assert not B.has(u) and not B.has(lam), B
+    for k in (-11.5, -0.7, 0.03, 0.2499):
+        K_value = (1 - math.sqrt(1 - 4 * k)) / 2
+        expected = float(B.subs(by["K"], K_value))
+        got = fn(1e300, k) * n * 1e300
+        assert abs(got - expected) <= 1e-14 * abs(expected), (n, k, got, expected)
+        assert fn(math.inf, k) == 0.0, (n, k)
