@@ -80,3 +80,24 @@ def test_the_reference_has_digits_for_the_cancellation_near_zero(few_points):
         return 2 * math.sin(x / 2) ** 2 / (x * x)
     rep = run.audit_one(_job("s", (1 - sp.cos(u)) / u**2, good, (KernelArg("u", 1e-6, 3.0, log=True),)))
     assert rep["worst_scaled"] <= 4.0, rep
+
+
+def test_an_argument_accepted_up_to_inf_is_read_and_sampled_there(few_points, monkeypatch):
+    """A guard `<= math.inf` is read as +inf, the audit then samples above hi and +inf itself, where the
+    reference is the limit: th u/u → 0 given as 0 passes; a kernel that gives NaN at inf fails."""
+    code = "def k(u):\n    if not 1e-06 <= u <= math.inf:\n        raise ValueError('k: u = 1 is outside its domain')\n"
+    assert run.accepted(code, "k", ARGS[:1]) == ((1e-6, math.inf),)
+    expr = sp.tanh(u) / u
+
+    def good(x):
+        return 1.0 / x if x > 700.0 else math.tanh(x) / x
+
+    def bad(x):
+        return math.tanh(x) / x if x < math.inf else math.nan
+    monkeypatch.setattr(run, "outside", lambda job, errno_of: [])     # (these plain functions have no guard)
+    for fn, passes in ((good, True), (bad, False)):
+        job = run.Job("t", "test", "test.t", ARGS[:1], expr, (u,), fn, fn, "", ((1e-6, math.inf),))
+        far = run.far_points(job, "t")
+        assert math.inf in [p[0] for p in far] and min(p[0] for p in far) > 700.0
+        rep = run.audit_one(job)
+        assert (not run.over([rep])) == passes, rep

@@ -134,12 +134,12 @@ def test_C_kernel_gives_its_limits(emitted):
 
 
 def test_outside_the_domain_is_a_domain_error(emitted):
-    """docs/kernel-accuracy.md: ValueError in Python, NaN (errno EDOM) in C, for NaN, ±inf and the doubles just
+    """docs/kernel-accuracy.md: ValueError in Python, NaN (errno EDOM) in C, for NaN, −inf and the doubles just
     outside each end; G keeps u ≥ 1e-6 (it grows as 1/(εu²), (264): no limit at 0)."""
     nxt = lambda x, d: math.nextafter(x, d)    # noqa: E731
-    bad = {"eq263_G": [(0.0, 1e-3), (nxt(1e-6, 0), 1e-3), (nxt(700.0, math.inf), 1e-3), (math.inf, 1e-3),
+    bad = {"eq263_G": [(0.0, 1e-3), (nxt(1e-6, 0), 1e-3), (-math.inf, 1e-3),
                        (math.nan, 1e-3), (1.0, nxt(1e-9, 0)), (1.0, nxt(0.1, 1)), (1.0, 0.0), (-1.0, 1e-3)],
-           "eq285_C": [(-5e-324,), (nxt(700.0, math.inf),), (math.inf,), (-math.inf,), (math.nan,)]}
+           "eq285_C": [(-5e-324,), (-math.inf,), (math.nan,)]}     # (u above 700 and u = inf: the thread, below)
     for name, points in bad.items():
         for lang, fn in emitted[name].items():
             for p in points:
@@ -157,3 +157,18 @@ def test_the_reference_sees_the_cancellation_of_the_printed_C():
     naive = 0.375 * (math.sinh(4 * u) - 4 * u) / (math.sinh(u) ** 2 * (math.sinh(2 * u) + 2 * u))
     value, kappa = reference(C_reference, (u,))
     assert ulp_error(naive, value) > 100 * BOUND * max(1.0, kappa)
+
+
+def test_G_and_C_give_the_thread_above_700_and_at_inf(emitted):
+    """Both have a finite limit as u → ∞ (docs/kernel-accuracy.md, "Above hi"): C → 3/2 (the thread, (285)), and
+    G ~ 1/(2εu) → 0; above 700 the e^{-u} terms are below 1e-304, so the references are 3/2 and (coth u/u)/(2ε)
+    with coth u = 1, from (263)'s own terms (U_1² = 1/sh²u underflows)."""
+    for u in (math.nextafter(700.0, math.inf), 1e4, 1e300, math.inf):
+        for lang, fn in emitted["eq285_C"].items():
+            assert fn(u) == 1.5, (lang, u)
+        for eps in (1e-9, 0.1):
+            with mp.workdps(DPS):
+                value = 1 / (2 * mp.mpf(eps) * mp.mpf(u)) if u < math.inf else mp.mpf(0)
+            for lang, fn in emitted["eq263_G"].items():
+                got = fn(u, eps)
+                assert (got == 0.0) if value == 0 else ulp_error(got, value) <= BOUND, (lang, u, eps, got)

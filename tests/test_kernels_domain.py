@@ -1,9 +1,11 @@
 """One behaviour outside the domain, the same in C and Python (docs/kernel-accuracy.md):
 a NaN or a value outside the accepted domain is a domain error — ValueError naming the argument
-and the domain in Python, NaN with errno = EDOM in C; u → 0 gives the limit where it is finite."""
+and the domain in Python, NaN with errno = EDOM in C; u → 0 and u → +∞ (u = inf included) give the
+limit where it is finite (pendsym/emit/kernels/limits.py)."""
 import ctypes
 import math
 import shutil
+import sys
 
 import mpmath as mp
 import pytest
@@ -16,7 +18,8 @@ u = sp.Symbol("u", positive=True)
 lam = sp.Symbol("lambda", positive=True)
 ARGS = (KernelArg("lambda", 1e-3, 10.0, unit="m"), KernelArg("u", 1e-6, 700.0, log=True))
 BETA = lam * (1 - 2 * sp.tanh(u / 2) / u)          # → λu²/12 as u → 0: finite limit 0
-W0 = lam / (u * sp.sinh(u))                         # → ∞ as u → 0: no limit
+W0 = lam / (u * sp.sinh(u))                         # → ∞ as u → 0: no limit; → 0 as u → ∞
+GROW = lam * u / sp.tanh(u)                         # → λ as u → 0; grows as λu: no limit at +∞
 SUBNORMAL = 5e-324
 
 
@@ -28,7 +31,8 @@ def _result(rid, derived):
 
 @pytest.fixture(scope="module")
 def kernels():
-    return {k.name: k for k in (kn.kernel_of(_result("test.eq1.beta", BETA)), kn.kernel_of(_result("test.eq2.w0", W0)))}
+    return {k.name: k for k in (kn.kernel_of(_result("test.eq1.beta", BETA)), kn.kernel_of(_result("test.eq2.w0", W0)),
+                                 kn.kernel_of(_result("test.eq3.grow", GROW)))}
 
 
 @pytest.fixture(scope="module")
@@ -62,24 +66,25 @@ def _errno(lib, fn, *p):
     return v, lib.last_errno()
 
 
-def test_the_limit_at_zero_is_accepted_only_where_it_is_finite(kernels):
-    assert kernels["eq1_beta"].domain == ((1e-3, 10.0), (0.0, 700.0))
-    assert kernels["eq2_w0"].domain == ((1e-3, 10.0), (1e-6, 700.0))
+def test_the_limits_at_zero_and_infinity_are_accepted_only_where_they_are_finite(kernels):
+    assert kernels["eq1_beta"].domain == ((1e-3, 10.0), (0.0, math.inf))
+    assert kernels["eq2_w0"].domain == ((1e-3, 10.0), (1e-6, math.inf))
+    assert kernels["eq3_grow"].domain == ((1e-3, 10.0), (0.0, 700.0))
 
 
-OUTSIDE_U = (-1.0, -SUBNORMAL, math.nan, math.inf, -math.inf, math.nextafter(700.0, math.inf), 1e300)
+OUTSIDE_U = (-1.0, -SUBNORMAL, math.nan, -math.inf)
+OUTSIDE_GROW = OUTSIDE_U + (math.inf, math.nextafter(700.0, math.inf), 1e300)
+CASES = [(n, b) for n in ("eq1_beta", "eq2_w0") for b in OUTSIDE_U] + [("eq3_grow", b) for b in OUTSIDE_GROW]
 
 
-@pytest.mark.parametrize("bad", OUTSIDE_U)
-@pytest.mark.parametrize("name", ["eq1_beta", "eq2_w0"])
+@pytest.mark.parametrize(("name", "bad"), CASES)
 def test_outside_the_domain_python_raises_a_value_error_naming_the_argument(py, name, bad):
     with pytest.raises(ValueError, match=rf"^{name}: u = .* is outside its domain \[") as err:
         py[name](1.0, bad)
     assert "\n" not in str(err.value)
 
 
-@pytest.mark.parametrize("bad", OUTSIDE_U)
-@pytest.mark.parametrize("name", ["eq1_beta", "eq2_w0"])
+@pytest.mark.parametrize(("name", "bad"), CASES)
 def test_outside_the_domain_c_returns_nan_with_edom(clib, name, bad):
     import errno
     v, e = _errno(clib, _c(clib, name), 1.0, bad)
@@ -122,3 +127,33 @@ def test_the_ends_themselves_are_inside(py, clib):
     for p in ((1e-3, 1e-6), (10.0, 700.0), (1e-3, 700.0)):
         for got in (py["eq2_w0"](*p), _c(clib, "eq2_w0")(*p)):
             assert math.isfinite(got) and got > 0
+
+
+FAR_U = (math.nextafter(700.0, math.inf), 701.0, 745.0, 1e4, 1e16, 1e300, sys.float_info.max, math.inf)
+
+
+@pytest.mark.parametrize("far", FAR_U)
+def test_above_hi_with_a_finite_limit_gives_the_value(py, clib, far):
+    """β = λ(1 − 2 th(u/2)/u) → λ and w0 = λ/(u sh u) → 0 as u → ∞: above 700 the kernels give the form at
+    60 digits, and at u = inf its limit (λ; 0), in C and Python."""
+    with mp.workdps(60):
+        if far == math.inf:
+            beta, w0 = mp.mpf(2.5), mp.mpf(0)
+        else:
+            x = mp.mpf(far)
+            beta, w0 = 2.5 * (1 - 2 * mp.tanh(x / 2) / x), 2.5 / (x * mp.sinh(x))
+    for lang, (b, w) in {"Python": (py["eq1_beta"](2.5, far), py["eq2_w0"](2.5, far)),
+                         "C": (_c(clib, "eq1_beta")(2.5, far), _c(clib, "eq2_w0")(2.5, far))}.items():
+        assert abs(mp.mpf(b) - beta) <= 4 * math.ulp(float(beta)), (lang, far, b)
+        assert math.isfinite(w) and w >= 0, (lang, far, w)
+        assert abs(mp.mpf(w) - w0) <= 4 * math.ulp(float(w0)), (lang, far, w)
+
+
+def test_the_far_form_drops_only_what_is_below_an_ulp():
+    """far_form: the leading terms in e^{−u}, written in 1/u (β: λ − 2λ/u; w0: 2λe^{−u}/u); none for a form
+    that grows (λu coth u) or has no limit (a sine)."""
+    from pendsym.emit.kernels.limits import far_form
+    assert sp.simplify(far_form(BETA, u) - (lam - 2 * lam / u)) == 0
+    assert sp.simplify(far_form(W0, u) - 2 * lam * sp.exp(-u) / u) == 0
+    assert far_form(GROW, u) is None or sp.limit(far_form(GROW, u), u, sp.oo) == sp.oo
+    assert far_form(lam * sp.sin(u) / u, u) is None

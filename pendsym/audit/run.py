@@ -43,7 +43,7 @@ import sympy as sp
 
 from .. import pipeline, schedule, stages
 from ..emit import kernels as kn
-from ..emit.kernels.limits import ref_dps
+from ..emit.kernels.limits import LIMIT_FAR, far_dps, far_values, ref_dps
 from ..emit.kernels.measure import reference
 from ..result import KernelArg
 from . import points as pt
@@ -88,8 +88,21 @@ class Judge:
 
     def truth(self, p: tuple, extra: int = 0):
         at = [v if v != 0 or not self.zero_limit(i) else LIMIT_AT for i, v in enumerate(p)]
-        with mp.workdps(ref_dps(at) + extra):
-            if any(v != w for v, w in zip(p, at)) and self._vanishes(at):
+        far = [i for i, v in enumerate(at) if v == math.inf]           # accepted up to +inf: the limit there
+        beyond = any(v > a.hi for v, a in zip(at, self.job.args))      # above hi: digits for the form's cancellation
+        with mp.workdps((far_dps([LIMIT_FAR[1] if v == math.inf else v for v in at]) if beyond else ref_dps(at)) + extra):
+            if far:
+                lo_at, hi_at = list(at), list(at)
+                for i in far:
+                    lo_at[i], hi_at[i] = LIMIT_FAR
+                try:
+                    v0, v1 = (abs(self.f(*[mp.mpf(x) for x in q])) for q in (lo_at, hi_at))
+                except (ZeroDivisionError, ValueError, OverflowError):
+                    return mp.nan
+                if v1 <= mp.mpf(10) ** -30 * v0:
+                    return mp.mpf(0)
+                at = hi_at
+            if any(v != w for v, w in zip(p, at)) and not far and self._vanishes(at):
                 return mp.mpf(0)
             p = at
             try:
@@ -106,7 +119,10 @@ class Judge:
         return abs(self.f(*[mp.mpf(v) for v in at])) < mp.mpf(10) ** -300
 
     def kappa(self, p: tuple) -> float:
-        with mp.workdps(ref_dps(p)):
+        if any(v == math.inf for v in p):       # the limit at +inf: its κ in the other arguments, at LIMIT_FAR
+            p = tuple(LIMIT_FAR[1] if v == math.inf else v for v in p)
+        beyond = any(v > a.hi for v, a in zip(p, self.job.args))
+        with mp.workdps(far_dps(p) if beyond else ref_dps(p)):
             try:
                 return float(self.cond(*[mp.mpf(x) for x in p]))
             except (ZeroDivisionError, ValueError, OverflowError):
@@ -157,8 +173,13 @@ def accepted(code: str, name: str, args: Sequence[KernelArg]) -> tuple:
     out = []
     for a in args:
         g = re.search(rf"if not (\S+) <= {re.escape(kn.identifier(a.name))} <= (\S+):", text)
-        out.append((float(g.group(1)), float(g.group(2))) if g else (a.lo, a.hi))
+        out.append((_number(g.group(1)), _number(g.group(2))) if g else (a.lo, a.hi))
     return tuple(out)
+
+
+def _number(text: str) -> float:
+    """A bound of the guard: a float literal, or math.inf (an argument accepted up to +inf)."""
+    return math.inf if text == "math.inf" else -math.inf if text == "-math.inf" else float(text)
 
 
 def outside(job: Job, errno_of: Callable[[], int]) -> list[str]:
@@ -166,7 +187,7 @@ def outside(job: Job, errno_of: Callable[[], int]) -> list[str]:
     just outside each end of each argument: ValueError naming the argument in Python, NaN with
     errno = EDOM in C.  Returns the departures from it."""
     bad = []
-    inside = tuple((lo + hi) / 2 if not a.log else math.sqrt(max(lo, a.lo) * hi)
+    inside = tuple((lo + hi) / 2 if not a.log else math.sqrt(max(lo, a.lo) * min(hi, a.hi))
                    for a, (lo, hi) in zip(job.args, job.domain))
     for i, (lo, hi) in enumerate(job.domain):
         for v in (math.nan, math.inf, -math.inf, math.nextafter(lo, -math.inf), math.nextafter(hi, math.inf)):
@@ -206,13 +227,30 @@ def tiny_points(job: Job, rng_seed: str) -> list[tuple]:
     return out
 
 
+def far_points(job: Job, rng_seed: str) -> list[tuple]:
+    """For an argument accepted up to +inf: the values of :func:`limits.far_values` (+inf included) and
+    points log-uniform in (hi, 1e300), the other arguments at random."""
+    rng = random.Random(rng_seed + ":far")
+    out = []
+    for i, (a, (_, hi)) in enumerate(zip(job.args, job.domain)):
+        if not hi > a.hi:
+            continue
+        vals = list(far_values(a.hi)) + [math.exp(rng.uniform(math.log(a.hi), math.log(1e300))) for _ in range(TINY_POINTS)]
+        for v in vals:
+            p = [pt.draw(b, rng) for b in job.args]
+            p[i] = v
+            out.append(tuple(p))
+    return out
+
+
 def audit_one(job: Job, points: int = POINTS) -> dict:
     """The audit of one kernel (run in a worker): its figures and its worst point (`points`: at
     least so many, the search included; fewer than POINTS only for a quick measure)."""
     start = time.process_time()
     judge = Judge(job)
     params = [kn.identifier(a.name) for a in job.args]
-    hard = pt.hard_points(job.args, params, job.code, job.expr, job.syms, job.name) + tiny_points(job, job.name)
+    hard = (pt.hard_points(job.args, params, job.code, job.expr, job.syms, job.name) + tiny_points(job, job.name)
+            + far_points(job, job.name))
     climbs = CLIMB_STARTS * pt.climb_length(CLIMB_BUDGET // CLIMB_STARTS)
     pts = list(dict.fromkeys(hard))
     seen = set(pts)

@@ -13,8 +13,16 @@
 
 Both Results live in this package's :mod:`.table` (n°85 and n°93): the isochronism package
 (:mod:`..ch7_isochronism`) holds only the general-blade forms of (281)–(284), which are not closed.
+
+The inverted blade's (chapter VIII, n°103) G of (314) and C of (317) are declared here too, on the stability
+window n = 0 of (309), 0 < u < π (β1 < 0 (304)): u ∈ [1e-6, π] (π the double below π).  Both grow as
+1/sin²u towards the window's end (a pole at u = π, where κ ~ 2π/(π − u) lets the error grow with it).
+The window n = 1 (2x1 < u < 3π) has a1 < 0 throughout (tan u < 0 there, (310)): no body with a > 0 is
+critical there, and one kernel is emitted per Result, so it is not emitted (C measures 0.05 there).
 """
 from __future__ import annotations
+
+import math
 
 from pendsym.result import KernelArg, KernelSpec
 
@@ -31,3 +39,14 @@ C_KERNEL = KernelSpec(args=(U_ARG,), naive_defs=NAIVE,
                       doc="C = (3/8)(sh 4u − 4u)/(sh²u(sh 2u + 2u)) (285), the isochronism coefficient of the "
                           "gravity pendulum on a uniform blade (ΔT/T = −(θ0²/16)GC, (283)); C → 1 as u → 0, "
                           "C → 3/2 as u → ∞ (the thread).")
+
+# (309), n = 0: the window 0 < u < π of the inverted uniform blade (math.pi is the double below π)
+U_WINDOW = KernelArg("u", 1e-6, math.pi, log=True)
+G_INVERTED_KERNEL = KernelSpec(args=(U_WINDOW, EPS_ARG),
+                               doc="G = (1/sin²u + cot u/u)/(2ε) (314), the sensitivity coefficient of the gravity "
+                                   "pendulum on an inverted uniform blade at a = a1 − ελ (312), principal part in ε; "
+                                   "G ~ 1/(εu²) as u → 0, G ~ 1/(2ε sin²u) as u → π (the window's end).")
+C_INVERTED_KERNEL = KernelSpec(args=(U_WINDOW,),
+                               doc="C = (3/8)(4u − sin 4u)/(sin²u(2u + sin 2u)) (317), the isochronism coefficient "
+                                   "of the gravity pendulum on an inverted uniform blade; C → 1 as u → 0, "
+                                   "C ~ 3π/(16 sin²u) as u → π (the window's end).")

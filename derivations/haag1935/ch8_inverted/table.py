@@ -10,6 +10,7 @@ from pendsym.result import Spec
 
 from ..ch7_gravity.checks_gravity import C_values, along_blade, g_correction, inverse_eps, order, sensitivity
 from ..common import READ_VW, rid, src
+from ..ch7_gravity.kernels import C_INVERTED_KERNEL, G_INVERTED_KERNEL
 from ..ch7_gravity.printed import FATIGUE_DEFS, READ_X
 from ..symbols import lam, omega, u
 from . import derivation, printed, truth
@@ -106,7 +107,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid(314, "G"), "G = (1/sin²u + cot u/u)/(2ε), inverted", src(103, "314"), "G", derivation.G_314,
              deps=(rid(263, "G"),), printed=printed.G,
              check=order(sensitivity, "εG, G = −d log n²/d log |g| (stencil), a = a1 − ελ", 1, "u=1",
-                         sign=-1, scale=inverse_eps)),
+                         sign=-1, scale=inverse_eps), kernel=G_INVERTED_KERNEL),
         Spec(rid(315, "dg"), "dg/g correction per degree, inverted uniform blade", src(103, "315"), r"\frac{dg}{g}",
              derivation.by_rotation(272, "dg"), deps=(rid(272, "dg"),), printed=printed.dg,
              check=order(g_correction, "dg/g = −(2/G)dT/T of the inverted blade (g < 0), both from the truth", 1,
@@ -127,6 +128,6 @@ def specs() -> tuple[Spec, ...]:
                   "gravity meter).  It is the mode whose node is z' < 0: near a1 the slow one; n² is proportional to "
                   "a1 − a (310)."),
         Spec(rid(317, "C"), "C = (3/8)(4u − sin 4u)/(sin²u(2u + sin 2u)), inverted", src(103, "317"), "C",
-             derivation.C_317, printed=printed.C, check=C_values(-1),
+             derivation.C_317, printed=printed.C, check=C_values(-1), kernel=C_INVERTED_KERNEL,
              note="Derived from dsolve with M < 0 (circular functions), not by u → iu."),
     )

@@ -18,7 +18,7 @@ import sympy as sp
 from ...result import KernelArg, Result
 from .compile import emitted_py
 from .leaves import hard_argument, stable_forms
-from .measure import BOUND, Accuracy, errors, measure, py_callable
+from .measure import BOUND, Accuracy, _symbols, errors, measure, py_callable
 from .rules import NEAR_VERTEX, NEAR_ZERO, REWRITES, rounded_multiples
 from .sampling import kernel_sample, sample_points, vertex_points
 
@@ -27,7 +27,8 @@ HEADROOM = 0.25         # a rewrite over a quarter of the bound on the sample le
 NOISE = 0.75            # scaled: rewrites whose maxima on the sample differ by less are ranked by their mean
 MEAN_TIE = 0.015       # relative: mean errors closer than this are a tie (broken by the number of operations;
                         # n22_dtheta 1.15 %; at 2 % n30_Ec took its half-angle form, 1.9 % over, 4.25 in make audit)
-SAME_POINTS = 8         # points a rewrite must agree with the derived form on (double, 1e-9)
+SAME_POINTS = 8         # points a rewrite must agree with the derived form on (SAME_DPS digits, 1e-20)
+SAME_DPS = 40
 
 
 @dataclass(frozen=True)
@@ -105,13 +106,18 @@ def choose_form(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> Choice:
 
 
 def _same_numerically(a, b, args, seed) -> bool:
-    """A rewrite must not change the function: compare at 8 interior points in double."""
-    fa, fb = (py_callable(x, args) for x in (a, b))
-    for p in sample_points(args, seed, SAME_POINTS, hard=False)[-SAME_POINTS:]:
-        va, vb = fa(*p), fb(*p)
-        if abs(va - vb) > 1e-9 * max(1.0, abs(vb)):
-            return False
-    return True
+    """A rewrite must not change the function: compare at 8 interior points at SAME_DPS digits (in
+    double the derived form may itself lose more than 1e-9 to cancellation, and a good rewrite was
+    rejected: G of an inverted blade, (cos 2u − 1) at u = 1e-5)."""
+    points = sample_points(args, seed, SAME_POINTS, hard=False)[-SAME_POINTS:]
+    try:
+        fa, fb = (sp.lambdify(list(_symbols(x, args)), x, modules=["mpmath", {"Magnitude": abs}]) for x in (a, b))
+        with mp.workdps(SAME_DPS):
+            return all(abs(va - vb) <= mp.mpf(10) ** -20 * max(1, abs(vb))
+                       for p in points for va, vb in [[f(*[mp.mpf(v) for v in p]) for f in (fa, fb)]])
+    except Exception:  # a form mpmath cannot evaluate (a codegen function): compared in double, as before
+        fa, fb = (py_callable(x, args) for x in (a, b))
+        return all(abs(va - vb) <= 1e-9 * max(1.0, abs(vb)) for p in points for va, vb in [[fa(*p), fb(*p)]])
 
 
 def naive_form(result: Result, args: Sequence[KernelArg]) -> tuple[str, sp.Expr]:

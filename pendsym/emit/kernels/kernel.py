@@ -15,7 +15,7 @@ from ...result import KernelArg, Result
 from .choice import HEADROOM, choose_form, naive_form
 from .compile import emitted_py
 from .leaves import hard_argument
-from .limits import accepted_domain
+from .limits import accepted_domain, beyond
 from .measure import BOUND, Accuracy, Naive, measure, measure_naive, references
 from .rules import SMALL_LAST
 from .sampling import kernel_sample
@@ -44,6 +44,7 @@ class Kernel:
         the contract they are measured against is stated once, in docs/kernel-accuracy.md."""
         dom = "; ".join(f"{a.name} in [{a.lo:g}, {a.hi:g}] {a.unit}" for a in self.args)
         ext = [f"{a.name} down to {lo:g}" for a, (lo, _) in zip(self.args, self.domain) if lo < a.lo]
+        ext += [f"{a.name} up to {hi:g}" for a, (_, hi) in zip(self.args, self.domain) if hi > a.hi]
         if ext:
             dom += f" (accepted, and measured by make audit, {', '.join(ext)}: the limit)"
         lines = [f"{self.doc} — {self.result_id} ({self.ref}).", f"Domain: {dom}.", f"Form: rewrite rule '{self.rule}'."]
@@ -104,5 +105,10 @@ def kernel_of(result: Result) -> Kernel | None:
             acc = measure(emitted_py(name, args, last), result.derived, args, pts, truths)
             if acc.max_scaled <= max(py.max_scaled, HEADROOM * BOUND):
                 rule, expr, py, domain = f"{rule}+{SMALL_LAST.name}", last, acc, dom
+    if hard is not None and (far := beyond(result.derived, args, name, expr, domain)) is not None:
+        # up to +inf where the limit is finite: the far form above the declared hi (no change below it)
+        expr, domain = far
+        rule = f"{rule}+far form above {hard.name} = {hard.hi:g}"
+        py = measure(emitted_py(name, args, expr, domain), result.derived, args, pts, truths)
     return Kernel(name, result.id, args, expr, rule, spec.kernel.doc or spec.title, spec.source.ref(),
                   py_accuracy=py, notes=choice.notes, naive=naive, reference=truths, domain=domain)

@@ -1,5 +1,5 @@
-"""The accepted domain of a kernel: its declared box, and down to 0 for the hard argument where
-the form as emitted gives the limit there.
+"""The accepted domain of a kernel: its declared box, down to 0 for the hard argument where
+the form as emitted gives the limit there, and up to +inf where its limit at +∞ is finite.
 
 A geometric argument (``log=True``, lo > 0) such as u is declared from lo = 1e-6, but many
 kernels have a finite limit as u → 0 (v_0 → λ/2, β_1 → 0) and a caller may pass u = 1e-300
@@ -7,11 +7,19 @@ or u = 0.  The emitted code is tried there (:data:`TINY`) at seeded values of th
 arguments, against the derived form at enough digits for its cancellation (:func:`ref_dps`);
 where it holds the bound at every such point, the accepted domain of that argument reaches
 down to 0 (the deep audit then samples (0, lo) as well); elsewhere below lo is a domain error.
+
+Above hi (u = 700: e^{−u} < 1e-304) the same rule gives +∞ (for u, the thread): where the derived form
+has a finite limit as the hard argument x → ∞, the kernel evaluates above hi its **far form**
+(:func:`far_form`: the exponentially small terms dropped, the rest written in 1/x, so that x = inf
+gives the limit), and the accepted domain reaches up to +inf if the emitted code holds the bound at
+every value of :data:`far_values` (the reference at +inf: the derived form at LIMIT_FAR[1], or 0 where
+it falls by 1e-30 from LIMIT_FAR[0]).
 """
 from __future__ import annotations
 
 import math
 import random
+import sys
 from typing import Sequence
 
 import mpmath as mp
@@ -19,6 +27,7 @@ import sympy as sp
 
 from ...result import KernelArg
 from .leaves import hard_argument
+from .rules import _in_E
 from .measure import BOUND, ref_dps
 
 # 0, subnormals, then every third decade and a seeded point inside each (a sparser list let through
@@ -26,6 +35,18 @@ from .measure import BOUND, ref_dps
 TINY = (0.0, 5e-324, 1e-320, 1e-310) + tuple(m * 10.0 ** -k for k in range(306, 6, -3) for m in (1.0, 2.8))
 TRIES = 4             # seeded values of the other arguments at each tiny value
 LIMIT_AT = (1e-40, 1e-80)   # the limit at 0: the derived form at 1e-80, or 0 where it falls by 1e-30 from 1e-40
+LIMIT_FAR = (1e40, 1e80)    # the limit at +inf: the derived form at 1e80, or 0 where it falls by 1e-30 from 1e40
+FAR_DIGITS = 3              # more digits of the reference per decade of x above 1: the derived form at x = 1e60 may
+                            # cancel like x³ (Γ2 at u = 1e60 was refused against a 50-digit reference)
+FAR_DECADES = (3, 4, 5, 6, 8, 10, 12, 15, 16, 17, 20, 30, 40, 60, 80, 100, 150, 200, 250, 300, 308)
+
+
+def far_values(hi: float) -> tuple[float, ...]:
+    """The values above hi tried (and sampled by make audit): the double after hi, a few just above it,
+    every listed decade (each also at 2.8×), the largest double and +inf."""
+    vals = [math.nextafter(hi, math.inf), hi * (1 + 1e-9), hi * 1.01, hi * 1.07, hi * 1.5, hi * 2]
+    vals += [m * 10.0 ** k for k in FAR_DECADES for m in (1.0, 2.8) if m * 10.0 ** k < math.inf]
+    return tuple(sorted({v for v in vals if hi < v < math.inf})) + (sys.float_info.max, math.inf)
 
 
 def accepted_domain(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: sp.Expr) -> tuple:
@@ -55,15 +76,23 @@ def accepted_domain(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: s
     return tuple(dom)
 
 
-def _vanishes(f, p: list, i: int) -> bool:
-    """The derived form tends to 0 as argument i → 0 (it falls by 1e-30 from 1e-40 to 1e-80)."""
+def _vanishes(f, p: list, i: int, at_points: tuple = LIMIT_AT) -> bool:
+    """The derived form tends to 0 as argument i → 0 (it falls by 1e-30 from 1e-40 to 1e-80), or,
+    with LIMIT_FAR, as it → +∞."""
     values = []
-    for x in LIMIT_AT:
+    for x in at_points:
         at = list(p)
         at[i] = x
-        with mp.workdps(ref_dps(at)):
+        with mp.workdps(far_dps(at)):
             values.append(abs(f(*[mp.mpf(v) for v in at])))
     return values[1] <= mp.mpf(10) ** -30 * values[0]
+
+
+def far_dps(p) -> int:
+    """Digits for the derived form at p: :func:`ref_dps`, plus FAR_DIGITS for each decade of its largest finite
+    coordinate above 1."""
+    big = max((abs(v) for v in p if math.isfinite(v)), default=1.0)
+    return ref_dps(p) + FAR_DIGITS * max(0, math.ceil(math.log10(max(big, 1.0))))
 
 
 def _holds(fn, f, p: list, at: list, zero: bool = False) -> bool:
@@ -75,7 +104,7 @@ def _holds(fn, f, p: list, at: list, zero: bool = False) -> bool:
         return False
     if zero:
         return math.isfinite(got) and abs(got) < 1e-300
-    with mp.workdps(ref_dps(at)):
+    with mp.workdps(far_dps(at)):
         xs = [mp.mpf(v) for v in at]
         true = f(*xs)
         if not math.isfinite(got) or not mp.isfinite(true):
@@ -86,3 +115,100 @@ def _holds(fn, f, p: list, at: list, zero: bool = False) -> bool:
         # "below 1e-300 passes" let through F_max at α = 1e-156, 1.5e4 ulp (the subnormal sin²(α/2)
         # times 4ghm/l); no κ here: its forward differences are taken at fewer digits than such points need
         return abs(mp.mpf(got) - true) <= BOUND * mp.mpf(math.ulp(float(true)))
+
+
+# ----------------------------------------------------------------- above hi: the limit at +inf
+def _leading(p: sp.Expr, E: sp.Symbol) -> tuple[int, sp.Expr]:
+    """(k, c): the lowest power E^k of the polynomial p in E, and its coefficient."""
+    poly = sp.Poly(p, E)
+    k = min(m for (m,), _ in poly.terms())
+    return k, sp.expand(poly.as_expr().coeff(E, k)) if k else sp.expand(p.subs(E, 0))
+
+
+def _cancelled(e: sp.Expr, t: sp.Symbol) -> sp.Expr:
+    """e with each maximal part rational in t cancelled to P(t)/Q(t) (roots, Piecewise and functions
+    are kept as units, each normalised inside), so that t = 0 gives a value where e has one."""
+    units: dict = {}
+
+    def hide(n):
+        if n.is_Atom or not n.has(t):
+            return n
+        if isinstance(n, sp.Piecewise):
+            d = sp.Dummy()
+            units[d] = sp.Piecewise(*[(_cancelled(b, t), c if c in (sp.true, sp.false)
+                                       else c.func(*[_cancelled(a, t) for a in c.args])) for b, c in n.args])
+            return d
+        if (n.is_Pow and not n.exp.is_Integer) or isinstance(n, sp.Function):
+            d = sp.Dummy()
+            units[d] = n.func(*[_cancelled(a, t) for a in n.args])
+            return d
+        return n.func(*[hide(a) for a in n.args])
+    return sp.cancel(hide(e)).xreplace(units)
+
+
+def far_form(expr: sp.Expr, x: sp.Symbol) -> sp.Expr | None:
+    """The form of expr for large x (above the declared hi, where e^{−x} < 1e-304): the exponentially
+    small terms dropped, written in 1/x so that x = inf gives the limit; None where that is not possible.
+
+    A rational function of E = e^{−x/q} and x (:func:`.rules._in_E`) keeps the leading terms of its
+    numerator and denominator, c(x)·E^k (k < 0: it grows, no finite limit); otherwise th and coth of
+    c·x (c > 0) are 1.  The rest is written in t = 1/x, cancelled (:func:`_cancelled`), and t = 1/x."""
+    t = sp.Dummy("t", positive=True)
+    got = _in_E(expr, x)
+    if got is not None:
+        num, den, E, q = got
+        (a, n_a), (b, d_b) = _leading(sp.expand(num), E), _leading(sp.expand(den), E)
+        if a < b:
+            return None
+        rest = _cancelled((n_a / d_b).subs(x, 1 / t), t)
+        return _in_reciprocal(rest, t, x) * (sp.exp(-(a - b) * x / q) if a > b else 1)
+    hyper = [f for f in expr.atoms(sp.Function) if f.has(x) and not isinstance(f, sp.Piecewise)]
+    if not hyper or any(not isinstance(f, (sp.tanh, sp.coth)) or not (f.args[0] / x).is_positive for f in hyper):
+        return None
+    rest = expr.xreplace({f: sp.Integer(1) for f in hyper}).subs(x, 1 / t)
+    return _in_reciprocal(_cancelled(rest, t), t, x)
+
+
+def _in_reciprocal(e: sp.Expr, t: sp.Symbol, x: sp.Symbol) -> sp.Expr:
+    """e (P(t)/Q(t)) with P and Q in Horner form in t, then t = 1/x: each level divides by x once, so no power
+    x^n is formed (x³ overflows above 5.6e102: I_λ's far form as 1/u³ failed at u = 1e150)."""
+    num, den = sp.fraction(e)
+    nested = []
+    for p in (num, den):
+        try:
+            nested.append(sp.horner(sp.expand(p), wrt=t) if p.has(t) and sp.Poly(p, t).degree() > 1 else p)
+        except sp.PolynomialError:
+            nested.append(p)
+    return (nested[0] / nested[1]).subs(t, 1 / x)
+
+
+def beyond(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: sp.Expr, domain: tuple) -> tuple | None:
+    """(form, domain) reaching up to +inf for the hard argument: form below its declared hi and
+    :func:`far_form` above it, where the emitted code holds the bound at every value of
+    :func:`far_values` (at +inf against the derived form's limit); None elsewhere."""
+    hard = hard_argument(expr, args)
+    if hard is None:
+        return None
+    x = next(s for s in expr.free_symbols if s.name == hard.name)
+    far = far_form(expr, x)
+    if far is None:
+        return None
+    from .compile import emitted_py          # (compile imports this module's users)
+    i = list(args).index(hard)
+    dom = list(domain)
+    dom[i] = (dom[i][0], math.inf)
+    whole = sp.Piecewise((far, x > hard.hi), (form, True))
+    fn = emitted_py(seed, args, whole, tuple(dom))
+    syms = [next(s for s in expr.free_symbols if s.name == a.name) for a in args]
+    f = sp.lambdify(syms, expr, modules="mpmath", cse=True)
+    rng = random.Random(seed + ":far")
+    for v in far_values(hard.hi):
+        for _ in range(TRIES):
+            p = [rng.uniform(a.lo, a.hi) if not a.log else math.exp(rng.uniform(math.log(a.lo), math.log(a.hi)))
+                 for a in args]
+            p[i] = v
+            at = list(p)
+            at[i] = v if v < math.inf else LIMIT_FAR[1]
+            if not _holds(fn, f, p, at, zero=v == math.inf and _vanishes(f, p, i, LIMIT_FAR)):
+                return None
+    return whole, tuple(dom)

@@ -204,7 +204,9 @@ class Printed:
     guard: str = ""
 
 
-def _bound(v: float) -> str:
+def _bound(v: float, lang: str = "py") -> str:
+    if v in (float("inf"), float("-inf")):         # an argument accepted up to +inf (its limit there)
+        return ("-" if v < 0 else "") + ("math.inf" if lang == "py" else "INFINITY")
     return repr(float(v))
 
 
@@ -221,7 +223,7 @@ def guard(f: Function, lang: str) -> str:
             out += [f"{INDENT}if not {_bound(lo)} <= {name} <= {_bound(hi)}:",
                     f'{INDENT * 2}raise ValueError(f"{f.name}: {name} = {{{name}!r}} is outside its domain {where}")']
         else:
-            out += [f"{INDENT}if (!({_bound(lo)} <= {name} && {name} <= {_bound(hi)})) {{",
+            out += [f"{INDENT}if (!({_bound(lo, lang)} <= {name} && {name} <= {_bound(hi, lang)})) {{",
                     f"{INDENT * 2}errno = EDOM;  /* {name} outside its domain {where} */",
                     f"{INDENT * 2}return NAN;", f"{INDENT}}}"]
     return "\n".join(out)

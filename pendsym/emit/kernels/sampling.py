@@ -82,6 +82,8 @@ def hard_points(args: Sequence[KernelArg], rng: random.Random, pieces: str | Non
             vals += [v for s in SWITCHES + KNOTS if a.lo < s < a.hi
                      for v in (math.nextafter(s, 0.0), s, math.nextafter(s, math.inf))]
         for v in vals:
+            if not a.lo <= v <= a.hi:        # 2·lo and hi/2 lie outside a range narrower than a factor 2
+                continue
             p = [draw(b, rng) for b in args]
             p[i] = v
             out.append(tuple(p))

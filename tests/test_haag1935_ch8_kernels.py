@@ -1,0 +1,276 @@
+"""The kernels of chapter VIII (issue #13): n² of the inverted uniform blade stated in ε (eq034_n2_inverted_eps),
+G of (314) and C of (317), emitted in Python and C (K in ε is a Result without a kernel: see its note).
+
+References, never the forms under test:
+- n² and K: the eigenproblem K q = n² 𝕄 q of the rigid pendulum on the directly solved inverted blade
+  (pendsym.suspension, g < 0), the mode whose node is above G (the truth of eq034.n2_inverted's check), at
+  a = a1 − ελ with a1 where det K = 0 (:func:`derivations.haag1935.ch8_inverted.table_kernels.node_mode`);
+- G and C: the inverted blade's w, the solution of w'' = w/M (9) with M = −λ²/u², w'(0) = 0, w'(λ) = 1 (checked
+  below), G2 = wλ − F2 (81) and F4 = ∫w'^4 ds (282) by mpmath quadrature: G = −G2/(ελ) ((262) with ε → −ε, (312)),
+  C = (wλ − F4)/G2 (284).
+The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
+"""
+import importlib.util
+import math
+import re
+import shutil
+
+import mpmath as mp
+import pytest
+
+from derivations.haag1935.ch7_gravity import truth as gravity_truth
+from derivations.haag1935.ch8_inverted import kernels as ch8_kernels
+from derivations.haag1935.ch8_inverted.table_kernels import node_mode
+from pendsym.emit import kernels as kn
+from pendsym.emit.kernels.measure import reference
+
+BOUND = 4.0
+DPS = 40
+LAM = mp.mpf(1)     # G and C do not depend on λ
+NAMES = {"eq034_n2_inverted_eps": 5, "eq314_G": 2, "eq317_C": 1}
+
+
+@pytest.fixture(scope="module")
+def emitted(generated, tmp_path_factory):
+    """{name: {language: callable}} of the four kernels as generated."""
+    spec = importlib.util.spec_from_file_location("ch8_haag1935", generated / "python" / "haag1935.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    out = {name: {"Python": getattr(mod, name)} for name in NAMES}
+    if shutil.which("cc"):
+        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
+        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch8"))
+        for name, n in NAMES.items():
+            out[name]["C"] = kn.c_callable(lib, name, n)
+    return out
+
+
+@pytest.fixture(scope="module")
+def code(generated):
+    return (generated / "python" / "haag1935.py").read_text()
+
+
+def ulp_error(got, value) -> float:
+    with mp.workdps(DPS):
+        return float(abs(mp.mpf(got) - value) / mp.mpf(math.ulp(float(value))))
+
+
+# ---------------------------------------------------------------- G and C: the memoir's definitions
+def w_blade(u, s):
+    """The inverted blade's w: w = −λ cos(us/λ)/(u sin u) solves w'' = −(u/λ)²w, w'(0) = 0, w'(λ) = 1."""
+    return -LAM * mp.cos(u * s / LAM) / (u * mp.sin(u))
+
+
+def G2(u):
+    """(81): G2 = wλ − F2, F2 = ∫_0^λ w'² ds by quadrature."""
+    return w_blade(u, LAM) - mp.quad(lambda s: (mp.sin(u * s / LAM) / mp.sin(u)) ** 2, [0, LAM])
+
+
+def C_reference(u):
+    """(284): C = (wλ − F4)/G2, F4 = ∫_0^λ w'^4 ds by quadrature."""
+    return (w_blade(u, LAM) - mp.quad(lambda s: (mp.sin(u * s / LAM) / mp.sin(u)) ** 4, [0, LAM])) / G2(u)
+
+
+def kappa_of(f, p):
+    """κ = Σ|x_i ∂f/∂x_i|/|f| by central differences (step 1e-15 relative) at DPS digits."""
+    with mp.workdps(DPS):
+        xs = [mp.mpf(v) for v in p]
+        value, total = f(*xs), 0
+        for i, x in enumerate(xs):
+            h = abs(x) * mp.mpf(10) ** -15
+            up, down = list(xs), list(xs)
+            up[i], down[i] = x + h, x - h
+            total += abs(x * (f(*up) - f(*down)) / (2 * h))
+        return value, float(total / abs(value))
+
+
+def test_the_reference_blade_solves_the_inverted_blade_equation():
+    with mp.workdps(DPS):
+        for u in (mp.mpf("0.3"), mp.mpf(2), mp.mpf(3)):
+            for s in (mp.mpf(0), mp.mpf("0.37"), LAM):
+                w2 = mp.diff(lambda x: w_blade(u, x), s, 2)
+                assert abs(w2 + w_blade(u, s) * u**2 / LAM**2) < mp.mpf(10) ** -25 * (abs(w2) + 1)
+                assert abs(mp.diff(lambda x: w_blade(u, x), s) - mp.sin(u * s / LAM) / mp.sin(u)) < mp.mpf(10) ** -25
+            assert abs(mp.diff(lambda x: w_blade(u, x), LAM) - 1) < mp.mpf(10) ** -25
+            # G2 = ∫ w²/M ds (79) with M = −λ²/u²
+            direct = -mp.quad(lambda s: w_blade(u, s) ** 2 * u**2 / LAM**2, [0, LAM])
+            assert abs(G2(u) - direct) < mp.mpf(10) ** -30 * abs(direct)
+
+
+# the switches 0.125, 1 (the series of C below 1) with the doubles beside them; π/2 (cos u = 0 in the form as
+# derived), 3.14159… (the window's end, the double below π), and points near it
+C_US = (1e-6, 1e-3, 0.12499999999999999, 0.125, 0.9999999999999999, 1.0, 1.0000000000000002, 1.5,
+        1.5707963267948966, 2.0, 2.9, 3.1, 3.14159, 3.141592653589793)
+G_EPS = (1e-9, 3.3e-4, 0.1)
+
+
+def test_C_kernel_holds_the_contract_against_the_quadrature(emitted):
+    for u in C_US:
+        value, kappa = kappa_of(C_reference, (u,))
+        for lang, fn in emitted["eq317_C"].items():
+            assert ulp_error(fn(u), value) <= BOUND * max(1.0, kappa), (lang, u, kappa)
+
+
+def test_C_kernel_gives_its_limit_at_zero(emitted):
+    """C → 1 as u → 0 (accepted down to 0)."""
+    for lang, fn in emitted["eq317_C"].items():
+        for u in (0.0, 5e-324, 1e-300, 1e-160):
+            assert abs(fn(u) - 1.0) <= 2 * math.ulp(1.0), (lang, u)
+
+
+def test_G_kernel_holds_the_contract_against_the_quadrature(emitted):
+    """G = −G2/(ελ): one quadrature per u; ε adds exactly 1 to κ."""
+    for u in C_US[:1] + C_US[2:]:
+        g2, kappa_u = kappa_of(G2, (u,))
+        for eps in G_EPS:
+            with mp.workdps(DPS):
+                value = -g2 / (mp.mpf(eps) * LAM)
+            for lang, fn in emitted["eq314_G"].items():
+                assert ulp_error(fn(u, eps), value) <= BOUND * (kappa_u + 1), (lang, u, eps, kappa_u)
+
+
+def test_the_G_reference_sees_the_cancellation_of_the_form_as_derived():
+    """The test can fail: (−u − sin 2u/2)/(uε(cos 2u − 1)), G as derived, divides by cos 2u − 1 = 0 at the double
+    below π and loses half its digits at u = 1e-5 (cos 2u − 1 cancels)."""
+    def as_derived(u, eps):
+        return (-u - math.sin(2 * u) / 2) / (u * eps * (math.cos(2 * u) - 1))
+    with pytest.raises(ZeroDivisionError):
+        as_derived(math.pi, 1e-3)
+    u = 1e-5
+    g2, kappa_u = kappa_of(G2, (u,))
+    with mp.workdps(DPS):
+        value = -g2 / (mp.mpf(1e-3) * LAM)
+    assert ulp_error(as_derived(u, 1e-3), value) > 100 * BOUND * (kappa_u + 1)
+
+
+# ---------------------------------------------------------------- n² and K: the eigenproblem
+# (u, ε): inside the window below and above π/2 (a1 < 0 there), near the critical distance and at ε = 0.4
+TRUTH_POINTS = (("u=1/2", "1/1000"), ("u=1", "1/10"), ("u=3/2", "1/5"), ("u=5/2", "1/10"))
+
+
+def _truth_args(key, eps):
+    u = float(mp.mpf(key[2:].split("/")[0]) / mp.mpf(key[2:].split("/")[1])) if "/" in key else float(key[2:])
+    R = float(gravity_truth.R_VALUE)
+    lam = float(gravity_truth.LAMBDA)
+    g = float(gravity_truth.G_VALUE)
+    return u, float(mp.mpf(eps.split("/")[0]) / mp.mpf(eps.split("/")[1])), R, lam, g
+
+
+@pytest.mark.slow
+def test_n2_kernel_holds_the_contract_against_the_eigenproblem(emitted):
+    """n² and K of the slow mode at a = a1 − ελ from the eigenproblem of the directly solved blade (30 digits), at
+    points where u, λ, R are the truth's (exact doubles or within 1e-17 of them): within 4 ulp × max(1, κ), κ ≤ 3
+    here (n² ∝ ε; the other arguments enter through ratios of O(1))."""
+    for key, eps in TRUTH_POINTS:
+        n2, K = node_mode(key, eps, 30)
+        u, e, R, lam, g = _truth_args(key, eps)
+        for lang, fn in emitted["eq034_n2_inverted_eps"].items():
+            assert ulp_error(fn(e, R, lam, u, g), n2) <= BOUND * 3, (lang, key, eps)
+
+
+def test_n2_kernel_against_one_eigenproblem_point(emitted):
+    """Quick sibling of the slow test: one point (u = 1, ε = 1/10) of the eigenproblem, and a kernel scaled by
+    1 + 3e-15 (13 ulp) would fail it."""
+    n2, K = node_mode("u=1", "1/10", 30)
+    u, e, R, lam, g = _truth_args("u=1", "1/10")
+    for lang, fn in emitted["eq034_n2_inverted_eps"].items():
+        got = fn(e, R, lam, u, g)
+        assert ulp_error(got, n2) <= BOUND, (lang, got)
+        assert ulp_error(got * (1 + 3e-15), n2) > BOUND, lang
+
+
+def test_n2_is_proportional_to_eps_near_the_critical_distance(emitted):
+    """n² ∝ ε near the critical distance (the sensitivity of the inverted gravity meter): n²/ε from the eigenproblem
+    at ε = 1/1000 is the kernel's to 1e-12 there, and its value at ε = 1e-9 to 1e-2 (the O(ε) term)."""
+    n2, _ = node_mode("u=1/2", "1/1000", 30)
+    slope = n2 / mp.mpf("0.001")
+    u, _, R, lam, g = _truth_args("u=1/2", "1/1000")
+    for lang, fn in emitted["eq034_n2_inverted_eps"].items():
+        assert abs(fn(1e-9, R, lam, u, g) / 1e-9 / slope - 1) < 1e-2, lang
+        assert abs(fn(1e-3, R, lam, u, g) / 1e-3 / slope - 1) < 1e-12, lang
+
+
+# ---------------------------------------------------------------- switches and the audit's worst points
+def _switch_points(code: str, name: str) -> list[float]:
+    m = re.search(rf"^def {name}\(.*?(?=^def |\Z)", code, re.S | re.M)
+    return sorted({float(c) for c in re.findall(r"\bu *[<>]=? *([0-9.]+(?:e[-+]?[0-9]+)?)\b", m.group(0))})
+
+
+@pytest.mark.slow
+def test_kernels_hold_the_contract_at_their_switches(emitted, code):
+    """At each switch of u read from the emitted Python, the double below, the switch and the double above:
+    within 4 ulp × max(1, κ) of the Result's derived form at 50 digits (κ: measure.reference), in C and Python."""
+    from pendsym import stages
+    ids = {"eq034_n2_inverted_eps": "haag1935.eq034.n2_inverted_eps", "eq314_G": "haag1935.eq314.G",
+           "eq317_C": "haag1935.eq317.C"}
+    built = stages.results(list(ids.values()))
+    others = {"varepsilon": 0.0371, "R": 0.05, "lambda": 0.1, "g": 9.81}
+    for name, rid in ids.items():
+        result = built[rid]
+        args = [a for a in result.spec.kernel.args if a.name in {s.name for s in result.derived.free_symbols}]
+        syms = [next(s for s in result.derived.free_symbols if s.name == a.name) for a in args]
+        f, cond = reference(result.derived, syms)
+        for c in _switch_points(code, name):
+            for u in (math.nextafter(c, 0.0), c, math.nextafter(c, math.inf)):
+                if not 1e-6 <= u <= math.pi:
+                    continue
+                p = [u if a.name == "u" else others[a.name] for a in args]
+                with mp.workdps(50):
+                    value = f(*[mp.mpf(v) for v in p])
+                    kappa = float(cond(*[mp.mpf(v) for v in p]))
+                for lang, fn in emitted[name].items():
+                    assert ulp_error(fn(*p), value) <= BOUND * max(1.0, kappa), (name, lang, u)
+
+
+def test_outside_the_domain_is_a_domain_error(emitted):
+    """ValueError in Python, NaN in C: u beyond the window (π and above: the circular forms have no limit at ∞,
+    so u = inf is a domain error), ε ≤ 0 or above 1/4, NaN."""
+    nxt = math.nextafter
+    bad = {"eq034_n2_inverted_eps": [(0.1, 0.05, 0.1, 3.1415926535897936, 9.81), (0.1, 0.05, 0.1, math.inf, 9.81),
+                                     (0.0, 0.05, 0.1, 1.0, 9.81), (nxt(0.25, 1), 0.05, 0.1, 1.0, 9.81),
+                                     (math.nan, 0.05, 0.1, 1.0, 9.81), (0.1, 0.05, 0.1, 0.0, 9.81)],
+           "eq314_G": [(0.0, 1e-3), (3.1415926535897936, 1e-3), (math.inf, 1e-3), (1.0, 0.0), (1.0, nxt(0.1, 1))],
+           "eq317_C": [(-5e-324,), (3.1415926535897936,), (9.0,), (math.inf,), (math.nan,)]}
+    for name, points in bad.items():
+        for lang, fn in emitted[name].items():
+            for p in points:
+                if lang == "Python":
+                    with pytest.raises(ValueError, match=name):
+                        fn(*p)
+                else:
+                    assert math.isnan(fn(*p)), (name, p)
+
+
+def test_the_eps_domain_keeps_the_root_positive():
+    """ε ≤ 1/4 < min over the window of 1/(u sin u) (0.5495 at tan u = −u): D = a − vλ > 0 on the whole box."""
+    assert ch8_kernels.EPS_INVERTED.hi == 0.25
+    with mp.workdps(30):
+        u_star = mp.findroot(lambda x: mp.tan(x) + x, 2.03)
+        assert 1 / (u_star * mp.sin(u_star)) > ch8_kernels.EPS_INVERTED.hi
+        assert all(1 / (x * mp.sin(x)) > 2 * ch8_kernels.EPS_INVERTED.hi for x in mp.linspace(mp.mpf("1e-6"), mp.pi - mp.mpf("1e-9"), 400))
+
+
+# the worst points make audit found (scaled 3.44 for C, 2.43 for G, 2.44 for n²): C and G against the quadratures,
+# n² against the Result's derived form at 50 digits (the contract's reference; the eigenproblem truth is at λ = 1/10)
+def test_C_and_G_at_the_audit_worst_points(emitted):
+    value, kappa = kappa_of(C_reference, (1.017566226270265,))
+    for lang, fn in emitted["eq317_C"].items():
+        assert ulp_error(fn(1.017566226270265), value) <= BOUND * max(1.0, kappa), lang
+    g2, kappa_u = kappa_of(G2, (1.8191182427059926,))
+    with mp.workdps(DPS):
+        value = -g2 / (mp.mpf(4.492336668341541e-09) * LAM)
+    for lang, fn in emitted["eq314_G"].items():
+        assert ulp_error(fn(1.8191182427059926, 4.492336668341541e-09), value) <= BOUND * (kappa_u + 1), lang
+
+
+@pytest.mark.slow
+def test_n2_at_the_audit_worst_point(emitted):
+    from pendsym import stages
+    result = stages.results(["haag1935.eq034.n2_inverted_eps"])["haag1935.eq034.n2_inverted_eps"]
+    p = (0.24313618986389524, 0.2657024516246783, 1.6564097084043943, 1.827704536987043, 9.827929170558107)
+    syms = [next(s for s in result.derived.free_symbols if s.name == a.name) for a in result.spec.kernel.args]
+    f, cond = reference(result.derived, syms)
+    with mp.workdps(50):
+        value, kappa = f(*[mp.mpf(v) for v in p]), float(cond(*[mp.mpf(v) for v in p]))
+    for lang, fn in emitted["eq034_n2_inverted_eps"].items():
+        assert ulp_error(fn(*p), value) <= BOUND * max(1.0, kappa), lang
