@@ -134,3 +134,13 @@ def test_holed_blade_cannot_give_it(root):
         scenes.solve(scenes.from_data(data))
     line = str(exc.value)
     assert "\n" not in line and "'temperature'" in line and "rhombus" in line, line
+
+
+def test_the_example_scene_as_written(root):
+    """scenes/gravity_meter_inverted_blade.toml's own (cited) coefficients: its answer against the meter warmed."""
+    sc = scenes.load(root / METER)
+    b = scenes.solve(sc)
+    true = truth(sc)
+    assert sc.temperature is not None and "temperature" in sc.wanted.quantities
+    assert abs(b.temperature - true) <= b.temperature_error, (b.temperature, true, b.temperature_error)
+    assert abs(true) > 10 * b.temperature_error
