@@ -146,3 +146,20 @@ def test_the_example_scene_as_written(root):
     assert sc.temperature is not None and "temperature" in sc.wanted.quantities
     assert abs(b.temperature - true) <= b.temperature_error, (b.temperature, true, b.temperature_error)
     assert abs(true) > 10 * b.temperature_error
+
+
+def test_the_inverted_coefficients_error_is_first_order_in_epsilon(root):
+    """(315) and (314) are leading order in ε = (a1 − a)/λ: the scene's residual against the warmed meter (massless,
+    zero amplitude, a moved towards a1) must fall like ε¹ and stay within the stated |c|ε (measured: −0.0108 ε)."""
+    from derivations.haag1935.scene_effects import _epsilon
+    points = []
+    for a in (0.0355, 0.03565, 0.03568):
+        data = data_of(root, METER, STEEL_BRASS, massless=True)
+        data["bob"]["a"], data["amplitude"] = a, 0.0
+        sc = scenes.from_data(data)
+        b = scenes.solve(sc)
+        true = truth(sc)
+        assert abs(b.temperature - true) <= b.temperature_error
+        points.append((math.log(_epsilon(b.inst)), math.log(abs(b.temperature - true) / abs(true))))
+    (x0, y0), (x1, y1) = points[0], points[-1]
+    assert abs((y1 - y0) / (x1 - x0) - 1) < 0.05, points
