@@ -75,7 +75,7 @@ class Drift(Strict):
 
 
 class Temperature(Strict):
-    """The thermal coefficients of Haag's n°14 (60), per kelvin, named by the memoir's symbols: the blade's length,
+    """The thermal coefficients of a blade pendulum, per kelvin, named by the memoir's symbols: the blade's length,
     width and thickness grow by α (so that its I = e³h/12 grows by 4α), its modulus E by β, and the pendulum's a and
     R by α' (``alpha_prime``)."""
     alpha: float = num(-2e-5, 1e-4, "1/K", "α: linear expansion coefficient of the blade's material", open_lo=False)
@@ -89,7 +89,7 @@ class Wanted(Strict):
     quantities: list[Literal["period", "swing", "rate", "sensitivity", "temperature"]] = Field(
         ["period"], min_length=1, max_length=5,
         description="what to report (sensitivity: d log T/d log g, dT/T per dg/g at fixed hardware; temperature: "
-                    "d log T/dϑ per kelvin, Haag's dT/T per degree, from the scene's temperature coefficients)")
+                    "d log T/dϑ per kelvin, dT/T per degree, from the scene's temperature coefficients)")
     tolerance: float = num(1e-15, 1e-1, "1", "relative tolerance on the period")
     target_period: float | None = num(1e-3, 1e4, "s", "the period the instrument is meant to have (for "
                                       "the rate in s/day)", default=None)
@@ -106,7 +106,7 @@ class Scene(Strict):
     # keys the issue names that the memoirs treat but the engine does not evaluate yet: refused with the reason
     clamping: object | None = Field(None, description="not supported yet (refused with the reason)")
     temperature: Temperature | None = Field(None, description="the thermal coefficients of a blade suspension and "
-                                            "of the pendulum (Haag n°14), for the temperature coefficient")
+                                            "of the pendulum, for the temperature coefficient")
     wanted: Wanted
 
     @model_validator(mode="after")
@@ -119,7 +119,7 @@ class Scene(Strict):
                              "(remove clamping)")
         if self.temperature is not None and not isinstance(sus, Blade):
             raise ValueError(f"temperature is given with a {sus.kind} suspension: the memoirs' temperature "
-                             "coefficients are those of a pendulum on a blade (Haag n°14, (223), (315)); remove "
+                             "coefficients are those of a pendulum on a blade; remove "
                              "temperature")
         if "temperature" in self.wanted.quantities and self.temperature is None:
             raise ValueError("temperature: required when wanted.quantities asks for 'temperature' (the coefficients "
