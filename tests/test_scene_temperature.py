@@ -163,3 +163,13 @@ def test_the_inverted_coefficients_error_is_first_order_in_epsilon(root):
         points.append((math.log(_epsilon(b.inst)), math.log(abs(b.temperature - true) / abs(true))))
     (x0, y0), (x1, y1) = points[0], points[-1]
     assert abs((y1 - y0) / (x1 - x0) - 1) < 0.05, points
+
+
+def test_a_long_direct_blade_cannot_give_it(root):
+    """λ/a > 0.1: (223) is first order in λ/a; chapter I's general (60) is not evaluated by any scene effect."""
+    data = data_of(root, REGULATOR, STEEL_BRASS)
+    data["bob"]["a"] = 9 * data["suspension"]["length"]
+    with pytest.raises(scenes.SceneError) as exc:
+        scenes.solve(scenes.from_data(data))
+    line = str(exc.value)
+    assert "\n" not in line and "'temperature'" in line and "λ/a > 0.1" in line, line
