@@ -127,7 +127,7 @@ def test_the_budget_of_the_rhombus_gravity_meter(root):
     # the uniform blade's effects and the hanging pendulum's circular error do not apply
     assert not {"circular", "blade", "inverted_blade", "inverted_isochronism", "inverted_weight"} & rows.keys()
     assert {k for k, r in rows.items() if r.status == "not available"} == {
-        "inverted_clamping", "inverted_temperature", "rhombus_mass"}
+        "inverted_clamping", "rhombus_temperature", "rhombus_mass"}
     assert b.within and b.sensitivity > 50
     assert b.swing == pytest.approx(b.T0 * (1 + rows["rhombus_isochronism"].value), rel=1e-15)
 
@@ -151,10 +151,9 @@ def test_unstable_or_inconsistent_holed_scenes_are_refused(root):
         budget_of(root, suspension=circle)
 
 
-def test_clamping_and_temperature_are_refused_with_the_reason(root):
+def test_clamping_is_refused_with_the_reason(root):
     from pendsym.scenes.schema import Scene  # noqa: F401  (the schema names the keys)
-    for key, value, reason in (("clamping", {"i": 0.001}, "need the clamps' angles"),
-                               ("temperature", {"alpha": 1e-5}, "critical distance")):
+    for key, value, reason in (("clamping", {"i": 0.001}, "need the clamps' angles"),):
         data = data_of(root)
         data[key] = value
         with pytest.raises(scenes.SceneError) as exc:

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 
-from pendsym.scenes.effects import Effect, Instrument, Pending
+from pendsym.scenes.effects import Coefficient, Effect, Instrument, Pending
 
 SHORT = 0.1          # λ/a at most: chapter VI's short blade
 
@@ -259,8 +259,58 @@ def pending() -> tuple[Pending, ...]:
                     "Haag 1935, ch. VII n°96 (291)–(292) (not worked out for the holed blade)", _rhombus),
             Pending("inverted_mass", "inertia and weight of the inverted blade (give suspension.density)",
                     "Haag 1935, ch. VIII n°103 (319)–(320)", lambda i: _inverted(i) and not _inverted_massive(i)),
-            Pending("inverted_temperature", "temperature coefficient of the gravity meter (not in the schema)",
-                    "Haag 1935, ch. VIII n°103 (315)", _inverted_any))
+            Pending("blade_temperature_long", "temperature coefficient of a blade that is not short (λ/a > 0.1; "
+                    "no scene effect evaluates chapter I's general (60))", "Haag 1935, ch. I n°14 (60)", long_blade),
+            Pending("rhombus_temperature", "temperature coefficient of the blade with a rhombus hole (no Result "
+                    "treats it)", "Haag 1935, ch. VIII n°103 (315) (the uniform blade only)", _rhombus))
+
+
+# ---------------------------------------------------------------- the temperature coefficient (n°14, (223), (315))
+def _thermal(inst: Instrument) -> dict[str, float]:
+    """Haag's α (the blade's expansion), α' (the pendulum's), β_t (dE/E) of n°14, per kelvin."""
+    return {"alpha": inst.thermal_alpha, "alpha'": inst.thermal_alpha_prime, "beta_t": inst.thermal_beta}
+
+
+def _has_thermal(inst: Instrument) -> bool:
+    return inst.thermal_alpha is not None
+
+
+def _short_thermal_symbols(inst: Instrument) -> dict[str, float]:
+    """The symbols of (223): a, λ, u and the thermal coefficients."""
+    return {"a": inst.a, "lambda": inst.blade_length, "u": inst.blade_u, **_thermal(inst)}
+
+
+def _short_thermal_error(c: float, inst: Instrument) -> float:
+    """(223) is (60) to the first order in λ/a with R = 0: its blade terms c − α'/2 (α'/2 is exact: l ∝ a when a
+    and R grow alike) have a relative error λ/a + R²/a², and a floor (λ/a)²(|α| + |α'| + |β|) for a cancellation."""
+    lam_a = inst.blade_short
+    size = abs(inst.thermal_alpha) + abs(inst.thermal_alpha_prime) + abs(inst.thermal_beta)
+    return abs(c - inst.thermal_alpha_prime / 2) * (lam_a + (inst.R / inst.a) ** 2) + lam_a**2 * size
+
+
+def _inverted_thermal_symbols(inst: Instrument) -> dict[str, float]:
+    """The symbols of (315), (314) and (310): u, λ and the thermal coefficients (ε from a1 of (310))."""
+    return {"u": inst.blade_u, "lambda": inst.blade_length, **_thermal(inst)}
+
+
+def coefficients() -> tuple[Coefficient, ...]:
+    """The temperature coefficient of the linear period, d log T/dϑ per kelvin: (223) for the short hanging blade,
+    −(G/2)(dg/g) of (315) for the inverted blade (n°87: the correction dg/g = −(2/G)dT/T, G of (314) = 2 d log T/d
+    log g)."""
+    return (
+        Coefficient("blade_temperature", "temperature", "temperature coefficient of the pendulum on a short blade",
+                    "Haag 1935, ch. VI n°70, eq. (223) (from (60), ch. I n°14)", "haag1935.eq223.dT",
+                    applies=lambda i: _short(i) and _has_thermal(i), symbols=_short_thermal_symbols,
+                    coefficient=lambda value, i, values: value, error=_short_thermal_error,
+                    model="uniform short blade, first order in λ/a, R neglected before a", covers=("blade",)),
+        Coefficient("inverted_temperature", "temperature", "temperature coefficient of the inverted blade's period",
+                    "Haag 1935, ch. VIII n°103, eq. (315) with G of (314), ε of (312), a1 of (310)",
+                    "haag1935.eq315.dg", applies=lambda i: _inverted(i) and _has_thermal(i),
+                    symbols=_inverted_thermal_symbols, uses=(A1, G314), given=_isochronism_given,
+                    coefficient=lambda value, i, values: -values["G"] / 2 * value,
+                    error=lambda c, i: abs(c) * _epsilon(i),
+                    model="leading order in ε (dT/T = −(G/2) dg/g, n°87)"),
+    )
 
 
 # ---------------------------------------------------------------- the inverted blade with a rhombus hole (chapter IX)

@@ -24,7 +24,7 @@ from .. import cache, keys, registry, verify
 from ..result import Result
 from ..scene import SceneError
 from . import schema
-from .effects import Effect, Instrument, effects, pending
+from .effects import Coefficient, Effect, Instrument, coefficients, effects, pending
 
 SECONDS_PER_DAY = 86400.0
 
@@ -56,6 +56,9 @@ class Budget:
     base: str                     # what the base is, for the output
     sensitivity: float | None = None          # d log T/d log g at fixed hardware
     sensitivity_error: float | None = None
+    temperature: float | None = None          # d log T/dϑ, per kelvin (when asked)
+    temperature_error: float | None = None
+    temperature_model: str = ""
 
     @property
     def period(self) -> float:
@@ -93,6 +96,9 @@ def instrument(sc: schema.Scene) -> Instrument:
         extra.update(support_K=sc.support.compliance, support_M=sc.support.mass)
     if sc.drift is not None:
         extra["drift_rate"] = sc.drift.rate
+    if sc.temperature is not None:
+        extra.update(thermal_alpha=sc.temperature.alpha, thermal_beta=sc.temperature.beta,
+                     thermal_alpha_prime=sc.temperature.alpha_prime)
     if isinstance(sus, schema.Blade) and sus.mounting == "inverted":
         # the rigid pendulum stands above its pivot: it has no period; a base effect gives it
         l = k = T0 = math.nan
@@ -238,7 +244,7 @@ def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
     return dropped
 
 
-def _values(eff: Effect, inst: Instrument, built: dict[str, Result]) -> dict[str, float]:
+def _values(eff: Effect | Coefficient, inst: Instrument, built: dict[str, Result]) -> dict[str, float]:
     """The Result's symbols at this scene: the effect's map, then what the Results it uses give (in order)."""
     values = dict(eff.symbols(inst))
     used: dict[str, float] = {}
@@ -282,6 +288,12 @@ def solve(sc: schema.Scene) -> Budget:
         reason = e.refuse(inst) if e.refuse else None
         if reason:
             raise SceneError(reason)
+    coefs = [c for c in coefficients() if c.quantity in sc.wanted.quantities and c.applies(inst)]
+    for q in ("temperature",):
+        if q in sc.wanted.quantities and not any(c.quantity == q for c in coefs):
+            why = next((p.title for p in pending() if p.applies(inst) and q in p.key), "no Result gives it")
+            raise SceneError(f"wanted.quantities asks for '{q}', which the engine cannot give for this scene: {why} "
+                             f"(remove '{q}')")
     replaced = {k for e in found for k in e.replaces}
     applicable = [(e, float(e.estimate(inst))) for e in found if e.key not in replaced]
     dropped = _drop(applicable, tol)
@@ -291,7 +303,9 @@ def solve(sc: schema.Scene) -> Budget:
         if e.scale_by and e.scale_by not in kept_keys:
             raise SceneError(f"effect {e.key} is kept but {e.scale_by}, which it scales, is dropped")
     try:
-        built = build([e.result for e in kept] + [u for e in kept for u in e.uses]) if kept else {}
+        ids = [e.result for e in kept] + [u for e in kept for u in e.uses] + [c.result for c in coefs] + \
+            [u for c in coefs for u in c.uses]
+        built = build(ids) if ids else {}
     except registry.UnknownResult as exc:
         raise SceneError(f"a memoir's scene effect names {exc}") from None
     total = results_total()
@@ -359,7 +373,28 @@ def solve(sc: schema.Scene) -> Budget:
                 sens_err += float(slope_err)
             else:
                 sens_err += 2 * abs(base_sens) * abs(rels[eff.key])
-    return Budget(sc, inst, T0 * factor, error, tuple(rows), interaction, len(built), total, T0, base, sens, sens_err)
+    temp, temp_err, temp_model = _coefficient(coefs, "temperature", inst, built, rels)
+    return Budget(sc, inst, T0 * factor, error, tuple(rows), interaction, len(built), total, T0, base, sens, sens_err,
+                  temp, temp_err, temp_model)
+
+
+def _coefficient(coefs: list[Coefficient], quantity: str, inst: Instrument, built: dict[str, Result],
+                 rels: dict[str, float]) -> tuple[float | None, float | None, str]:
+    """The coefficient ``quantity`` of the linear period from the one memoir Coefficient that applies, its error, and
+    what it is.  The kept effects' own dependence on it (but those the coefficient ``covers``) is not given by a Result:
+    bounded by 2|c| Σ|ΔT/T| (an effect
+    ∝ 1/ε near a critical distance varies as ε ∝ n², i.e. twice as fast as log T; the others more slowly)."""
+    mine = [c for c in coefs if c.quantity == quantity]
+    if not mine:
+        return None, None, ""
+    if len(mine) > 1:
+        raise SceneError(f"two memoir coefficients give '{quantity}' for this scene: {[c.key for c in mine]}")
+    c = mine[0]
+    values = _values(c, inst, built)
+    value = _value(built[c.result].derived_value, values, c.result)
+    coef = float(c.coefficient(value, inst, values))
+    err = float(c.error(coef, inst)) + 2 * abs(coef) * sum(abs(r) for k, r in rels.items() if k not in c.covers)
+    return coef, err, f"{c.title}: {c.model} ({c.result}; {c.source})"
 
 
 # ----------------------------------------------------------------- output
@@ -387,6 +422,9 @@ def text(b: Budget, name: str) -> str:
         else:
             lines.append(f"  sensitivity S = d log T/d log g = {b.sensitivity:+.6g} ± {b.sensitivity_error:.2g} "
                          "(dT/T = S dg/g at fixed hardware)")
+    if "temperature" in q:
+        lines.append(f"  temperature coefficient d log T/dϑ = {b.temperature:+.6g} ± {b.temperature_error:.2g} per K "
+                     f"(dT/T per kelvin: a rate of {-b.temperature * SECONDS_PER_DAY:+.4g} s/day per K)")
     if "rate" in q:
         lines.append(f"  rate        {b.rate:+.4g} s/day against {sc.wanted.target_period:g} s "
                      f"(± {b.error * SECONDS_PER_DAY:.2g} s/day)")
@@ -405,6 +443,8 @@ def text(b: Budget, name: str) -> str:
     lines.append("")
     for r in b.rows:
         lines.append(f"  {r.key}: {r.model}")
+    if b.temperature_model:
+        lines.append(f"  temperature: {b.temperature_model}")
     return "\n".join(lines)
 
 
@@ -417,6 +457,8 @@ def as_json(b: Budget, name: str) -> dict:
         "results_built": b.built, "results_total": b.total,
         "base": {"kind": b.inst.kind, "inverted": b.inst.inverted, "l_m": num(b.inst.l), "T0_s": b.T0, "model": b.base},
         "sensitivity": num(b.sensitivity), "sensitivity_error": num(b.sensitivity_error),
+        "temperature_coefficient_per_K": num(b.temperature), "temperature_coefficient_error": num(b.temperature_error),
+        "temperature_model": b.temperature_model or None,
         "interaction": b.interaction,
         "budget": [{"effect": r.key, "title": r.title, "source": r.source, "result": r.result or None,
                     "estimate": num(r.estimate), "value": num(r.value), "error": num(r.error), "status": r.status,

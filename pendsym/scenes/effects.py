@@ -48,6 +48,11 @@ class Instrument:
     support_K: float | None = None
     support_M: float = 0.0
     drift_rate: float | None = None        # dl/dt, m/s
+    # per kelvin (n°14): the blade's linear expansion α, its modulus's thermoelastic coefficient β (dE/E), the
+    # pendulum's linear expansion α' (a and R grow by it); None when the scene gives no temperature
+    thermal_alpha: float | None = None
+    thermal_beta: float | None = None
+    thermal_alpha_prime: float | None = None
     inverted: bool = False                 # an inverted blade (the bob above it): l, k, T0 are nan, an effect
                                            # with ``base`` gives the linear swing time instead
 
@@ -140,6 +145,34 @@ class Effect:
 
 
 @dataclass(frozen=True)
+class Coefficient:
+    """A coefficient of the period a memoir gives beside it (not a ΔT/T): e.g. d log T per kelvin.
+
+    ``quantity``: the ``wanted.quantities`` name that asks for it (e.g. "temperature").
+    ``symbols(inst)``, ``uses``, ``given``: as for :class:`Effect` (the Result's symbols at this scene).
+    ``coefficient(value, inst, values)``: the coefficient from the Result's value and the symbols' values (those
+    ``given`` added included; for "temperature": per kelvin).
+    ``error(coefficient, inst)``: its estimated error at this scene (the orders the Result neglects), ≥ 0.
+    """
+
+    key: str
+    quantity: str
+    title: str
+    source: str
+    result: str
+    applies: Callable[[Instrument], bool]
+    symbols: Callable[[Instrument], Mapping[str, float]]
+    coefficient: Callable[[float, Instrument, Mapping[str, float]], float]
+    error: Callable[[float, Instrument], float]
+    uses: tuple[str, ...] = ()
+    given: Callable[[Instrument, Mapping[str, float]], Mapping[str, float]] | None = None
+    model: str = "first order"
+    # keys of effects whose dependence on the quantity the Result already holds (e.g. the blade's linear effect in
+    # the blade's temperature coefficient): not bounded again
+    covers: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class Pending:
     """An effect a memoir treats that the engine has not built yet: listed in the budget, no size."""
 
@@ -182,3 +215,13 @@ def discover(pkgs: tuple[str, ...]) -> tuple[Effect, ...]:
 
 def effects() -> tuple[Effect, ...]:
     return discover(registry.packages())
+
+
+@lru_cache(maxsize=8)
+def discover_coefficients(pkgs: tuple[str, ...]) -> tuple[Coefficient, ...]:
+    """Every memoir's coefficients (``scene_effects.coefficients()``, optional)."""
+    return tuple(c for mod in _modules(pkgs) for c in (mod.coefficients() if hasattr(mod, "coefficients") else ()))
+
+
+def coefficients() -> tuple[Coefficient, ...]:
+    return discover_coefficients(registry.packages())

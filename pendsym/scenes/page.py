@@ -60,6 +60,9 @@ def tex(b: Budget, name: str) -> str:
               f"Swing time: {b.swing:.12g} s"]
     if b.sensitivity is not None and "sensitivity" in sc.wanted.quantities:
         answer.append(f"Sensitivity $d\\log T/d\\log g$: {b.sensitivity:+.6g} $\\pm$ {b.sensitivity_error:.2g}")
+    if b.temperature is not None:
+        answer.append(f"Temperature coefficient $d\\log T/d\\vartheta$: {b.temperature:+.6g} $\\pm$ "
+                      f"{b.temperature_error:.2g} per K")
     if b.rate is not None:
         answer.append(f"Rate: {b.rate:+.4g} s/day against {sc.wanted.target_period:g} s "
                       f"($\\pm$ {b.error * SECONDS_PER_DAY:.2g} s/day)")

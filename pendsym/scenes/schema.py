@@ -74,10 +74,22 @@ class Drift(Strict):
     rate: float = num(-1e3, 1e3, "m/s", "rate dl/dt at which the length grows (negative: shortens)", open_lo=False)
 
 
+class Temperature(Strict):
+    """The thermal coefficients of a blade pendulum, per kelvin, named by the memoir's symbols: the blade's length,
+    width and thickness grow by α (so that its I = e³h/12 grows by 4α), its modulus E by β, and the pendulum's a and
+    R by α' (``alpha_prime``)."""
+    alpha: float = num(-2e-5, 1e-4, "1/K", "α: linear expansion coefficient of the blade's material", open_lo=False)
+    beta: float = num(-1e-3, 1e-3, "1/K", "β: thermoelastic coefficient of the blade's Young's modulus, dE/(E dϑ)",
+                      open_lo=False)
+    alpha_prime: float = num(-2e-5, 1e-4, "1/K", "α': linear expansion coefficient of the pendulum (bob and rod: "
+                             "its a and R grow by it)", open_lo=False)
+
+
 class Wanted(Strict):
-    quantities: list[Literal["period", "swing", "rate", "sensitivity"]] = Field(
-        ["period"], min_length=1, max_length=4,
-        description="what to report (sensitivity: d log T/d log g, dT/T per dg/g at fixed hardware)")
+    quantities: list[Literal["period", "swing", "rate", "sensitivity", "temperature"]] = Field(
+        ["period"], min_length=1, max_length=5,
+        description="what to report (sensitivity: d log T/d log g, dT/T per dg/g at fixed hardware; temperature: "
+                    "d log T/dϑ per kelvin, dT/T per degree, from the scene's temperature coefficients)")
     tolerance: float = num(1e-15, 1e-1, "1", "relative tolerance on the period")
     target_period: float | None = num(1e-3, 1e4, "s", "the period the instrument is meant to have (for "
                                       "the rate in s/day)", default=None)
@@ -93,7 +105,8 @@ class Scene(Strict):
     drift: Drift | None = None
     # keys the issue names that the memoirs treat but the engine does not evaluate yet: refused with the reason
     clamping: object | None = Field(None, description="not supported yet (refused with the reason)")
-    temperature: object | None = Field(None, description="not supported yet (refused with the reason)")
+    temperature: Temperature | None = Field(None, description="the thermal coefficients of a blade suspension and "
+                                            "of the pendulum, for the temperature coefficient")
     wanted: Wanted
 
     @model_validator(mode="after")
@@ -104,11 +117,15 @@ class Scene(Strict):
             raise ValueError("clamping: not supported yet: the memoirs' clamping errors (listed as not available in the "
                              "budget of a blade) need the clamps' angles i, i', j, which no scene effect evaluates yet "
                              "(remove clamping)")
-        if self.temperature is not None:
-            raise ValueError("temperature: not supported yet: the memoirs give a temperature coefficient only for the "
-                             "gravity pendulum near its critical distance (listed as not available in the budget of an "
-                             "inverted blade), in the expansions α, α' and the modulus's β, which no scene effect "
-                             "evaluates yet (remove temperature)")
+        if self.temperature is not None and not isinstance(sus, Blade):
+            raise ValueError(f"temperature is given with a {sus.kind} suspension: the memoirs' temperature "
+                             "coefficients are those of a pendulum on a blade; remove "
+                             "temperature")
+        if "temperature" in self.wanted.quantities and self.temperature is None:
+            raise ValueError("temperature: required when wanted.quantities asks for 'temperature' (the coefficients "
+                             "alpha, beta, alpha_prime, per kelvin)")
+        if self.temperature is not None and "temperature" not in self.wanted.quantities:
+            raise ValueError("temperature is given but wanted.quantities does not ask for 'temperature'")
         if any(unicodedata.category(ch) in ("Cc", "Cf", "Cs", "Co", "Cn") for ch in self.name):
             raise ValueError("name: must be text without control or format characters")
         if isinstance(sus, Thread):
