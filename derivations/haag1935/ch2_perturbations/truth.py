@@ -11,7 +11,7 @@
 
 Cost (cold): each massive-blade n² with inertia is about 1–2 s CPU (a root at 15 digits, then at 30 by the
 secant method from it: pendsym.massive_blade.principal_n2), with the weight only a single integration of the
-blade; each (141) point 0.3 s; the mass checks four roots (three points and the confirmation at 36 digits),
+blade; each (141) point 0.3 s; the mass checks five roots (four points and the confirmation at 36 digits),
 the others five: (135) ≈ 7 s on the hole blade, 4 s on the uniform one, (136) ≈ 2 s.
 """
 from __future__ import annotations
@@ -27,8 +27,8 @@ from ..symbols import G_2
 from .derivation import a_q, g_fn, i_fn
 
 PENDULUM = "compact"
-MASSES = ("0.0001", "0.01")          # m'/m: three points in geometric progression (the O((m'/m)²) residual
-MASS_POINTS = 3                      # changes 10⁴-fold over them; each point with inertia is a 1–2 s root)
+MASSES = ("0.0001", "0.01")          # m'/m: four points in geometric progression (the O((m'/m)²) residual
+MASS_POINTS = 4                      # changes 10⁴-fold over them; each point with inertia is a 1–2 s root)
 YOUNG = ("0.0001", "0.01")           # ΔE/E = a0
 POINTS = 4
 CONFIRM_DPS = 36                     # the truth at the first point recomputed at 36 digits
