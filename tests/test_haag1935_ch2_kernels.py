@@ -25,6 +25,7 @@ import mpmath as mp
 import pytest
 import sympy as sp
 
+from derivations.haag1935.ch6_short_blade import truth_errors
 from pendsym import blade
 from pendsym.emit import kernels as kn
 
@@ -42,14 +43,9 @@ def shot(u: float, sign: int = 1) -> blade.BladeSolution:
 
 
 def Q1(sol, i, j):
-    """(248) at λ = 1: Q1 = (i²/2)(v_0 − λ) − hi + (i²/4)F_2 − h'/48, h (127), h' (132) at K = 1 by quadrature."""
-    def parts(s):
-        v, dv, w, dw = sol.state(s)
-        return (1 + dv) + dw, -i * (1 + dv) + j * dw
-    h = sol.integrate(lambda s: (lambda p: p[0] * p[1])(parts(s)))
-    hp = sol.integrate(lambda s: (lambda p: 24 * p[1] ** 2 * p[0] - 24 * i * p[1] * p[0] ** 2
-                                  - 12 * p[1] ** 2 * p[0] ** 2)(parts(s)))
-    return i**2 / 2 * (sol.v0 - 1) - h * i + i**2 / 4 * sol.F(2, 1) - hp / 48
+    """(248) at λ = 1: Q1 = (i²/2)(v_0 − λ) − hi + (i²/4)F_2 − h'/48, h (127), h' (132) at K = 1 by quadrature
+    (chapter VI's truth of the same quantity, thin_clamping, at a = 1)."""
+    return truth_errors.thin_clamping(sol, {"i": i, "j": j, "lambda": 1, "a": 1})
 
 
 def by_blade(name: str, u: float):

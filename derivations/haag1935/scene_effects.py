@@ -98,16 +98,22 @@ def _inverted_symbols(inst: Instrument) -> dict[str, float]:
 A1, G314, C317 = "haag1935.eq310.a1", "haag1935.eq314.G", "haag1935.eq317.C"
 
 
-def _isochronism_given(inst: Instrument, used: dict[str, float]) -> dict[str, float]:
-    """ε from a1 of (310) (312), then G of (314) and C of (317) as the symbols of (283)."""
-    out: dict[str, float] = {}
-    if A1 in used:
-        out["varepsilon"] = (used[A1] - inst.a) / inst.blade_length
-    if G314 in used:
-        out["G"] = used[G314]
-    if C317 in used:
-        out["C"] = used[C317]
-    return out
+def _given_for_283(a1: str, G: str, C: str):
+    """The symbols of (283) from the Results that give them: ε from a1 (312), then G and C."""
+    def given(inst: Instrument, used: dict[str, float]) -> dict[str, float]:
+        out: dict[str, float] = {}
+        if a1 in used:
+            out["varepsilon"] = (used[a1] - inst.a) / inst.blade_length
+        if G in used:
+            out["G"] = used[G]
+        if C in used:
+            out["C"] = used[C]
+        return out
+    return given
+
+
+# ε from a1 of (310) (312), then G of (314) and C of (317)
+_isochronism_given = _given_for_283(A1, G314, C317)
 
 
 def _inverted_massive(inst: Instrument) -> bool:
@@ -373,16 +379,8 @@ def _rhombus_unstable(inst: Instrument) -> str | None:
     return None
 
 
-def _rhombus_given(inst: Instrument, used: dict[str, float]) -> dict[str, float]:
-    """ε from a1 of the rhombus blade (312), then its G and C as the symbols of (283)."""
-    out: dict[str, float] = {}
-    if RH_A1 in used:
-        out["varepsilon"] = (used[RH_A1] - inst.a) / inst.blade_length
-    if RH_G in used:
-        out["G"] = used[RH_G]
-    if RH_C in used:
-        out["C"] = used[RH_C]
-    return out
+# ε from a1 of the rhombus blade (312), then its G and C
+_rhombus_given = _given_for_283(RH_A1, RH_G, RH_C)
 
 
 def _rhombus_slope(rel: float, inst: Instrument, S: float) -> tuple[float, float]:
