@@ -1,8 +1,15 @@
-"""Haag 1935, chapter VIII: the inverted blade's n² (the period) as a kernel, and K, stated in ε (issue #13).
+"""Haag 1935, chapter VIII: the inverted blade's n² (the period), K, stated in ε, and C on the window n = 1, as
+kernels (issue #13).
 
-The n² kernel is emitted (N2_EPS_KERNEL: make audit 2.44 Python, 1.9 C scaled).  K_EPS_KERNEL is declared but not
-asked for by its Spec: the form the engine emits for K measured 0.83 on the derive's sample and 5.02 in make audit
-(ε = 9.1e-7, u = 2.066; 3.5–3.9 ulp on random points of every part of the window).
+Measured by make audit (20,000 points each, scaled = ulp/max(1, κ)): n² (N2_EPS_KERNEL) 2.44 Python, 1.9 C;
+K (K_EPS_KERNEL) 2.46 in both (session 10; κ = 1.03 there, u = 2.019 near the stationary point of 1/(u sin u),
+whose rounding κ does not cover); C on the window n = 1 (C_WINDOW1_KERNEL) 1.0 (κ ≥ 37 on that window).
+Session 9's form of K, −ελS/(D(2R² + S)), measured 0.83 on the derive's sample and 5.02 in make audit (ε = 9.1e-7,
+u = 2.066): the engine's stable-form synthesis had split it into a polynomial in ε, R, λ whose coefficients are
+functions of u (the radicand P² + 4R²D² expanded in ε: leaves such as −2 + 4 tan(u/2)/u − 4/(u sin u), 130 ulp on
+their own grid), and the sample of 259 points in four arguments had not met the points where those cancel.  The
+form now derived (:func:`K_eps`) is (36) itself, K = (a + wλ)/(a + z − vλ) = −ε/(d + ζ) over λ, with the root
+ζ = z/λ written without cancellation; as derived it measures 0.58 on the sample, so the engine keeps it whole.
 
 Stated in a, the inverted blade's n² and K have no box for a domain: both vibrations exist only where
 a + wλ < 0 (305) and β1 < 0 (304), and a1 = −wλ = λ/(u tan u) (310) moves with u.  Stated in
@@ -18,13 +25,13 @@ A gravity meter works near its critical distance (ε ≪ 1; G of (314) is the pr
 The forms are derived here by SymPy from the Results: n² of the inverted uniform blade
 (``eq034.n2_inverted``: (34), (36), (30) with u → iu, g → −g) and K of (36) built the same way, with
 a = a1 − ελ, a1 of (310), and the root z = 2R²D/S, S = P + √(P² + 4R²D²) written without cancellation
-(P + Q for P ≥ 0, 4R²D²/(Q − P) otherwise): n² = 2gελ/(2R² + S), K = −ελS/(D(2R² + S)).  Through the root
+(P + Q for P ≥ 0, 4R²D²/(Q − P) otherwise): n² = 2gελ/(2R² + S); K = −ε/(d + ζ) (:func:`K_eps`).  Through the root
 as eq034.n2_inverted writes it, (a + z − vλ) and z both vanish on the curve D = 0 (ε = 1/(u sin u)), and the
 form as derived loses up to 1.4e5 ulp (×κ) at u = π/2, ε = 10.  a = λ(cot u/u − ε) is negative for
 u > π/2 and where cot u/u < ε: the formulas, and the truth (the eigenproblem of the directly solved inverted
 blade, which the chapter's window checks run at a = −1 m), hold for a centre of mass on either side of the
-blade's end.  The window n = 1 (2x1 < u < 3π, (309)) has a1 < 0 throughout (tan u < 0): not emitted (one
-kernel per Result).
+blade's end.  The window n = 1 (2x1 < u < 3π, (309)) has a1 < 0 throughout (tan u < 0): n² and K are not
+emitted there; C of (317), a function of u alone, is, as the Result eq317.C_window1 (one kernel per Result).
 
 The thread limit u → ∞ does not exist for the inverted blade (u → iu: the functions are circular).
 """

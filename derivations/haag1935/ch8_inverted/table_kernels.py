@@ -15,7 +15,7 @@ from ..ch7_gravity import truth as gravity_truth
 from ..common import rid, src
 from . import kernels, truth
 
-EPS_POINTS = ("1/1000", "1/10", "2/5")     # ε: near the critical distance, and up to the kernel's ε ≤ 1/2
+EPS_POINTS = ("1/1000", "1/10", "2/5")     # ε: near the critical distance, and above the kernels' ε ≤ 1/4
 BLADES = truth.N2_BLADES + ("u=5/2",)      # and above π/2, where a1 < 0 (311): the kernels' window is (0, π)
 
 
