@@ -394,3 +394,16 @@ def test_C_window1_kernel_scaled_by_4e_14_fails_at_the_window_end(emitted):
     value, kappa = kappa_of(C_reference, (u,))
     for lang, fn in emitted["eq317_C_window1"].items():
         assert ulp_error(fn(u) * (1 + 4e-14), value) > BOUND * max(1.0, kappa), lang
+
+
+def test_C_grows_as_three_quarters_over_sin_squared_at_the_windows_ends():
+    """The kernels' docstrings: C ~ 3/(4 sin²u) as u → π (window n = 0) and u → 3π (window n = 1), not 3π/(16 sin²u)
+    as session 9's docstring of eq317_C said.  From the quadrature, C sin²u − 3/4 falls like (mπ − u)¹: its fitted
+    order over h = mπ − u = 1e-2 … 1e-5 is 1 (rule 3), so the limit is 3/4 and nothing else."""
+    with mp.workdps(DPS):
+        for m in (1, 3):
+            hs = [mp.mpf(10) ** -k for k in range(2, 6)]
+            res = [abs(C_reference(m * mp.pi - h) * mp.sin(m * mp.pi - h) ** 2 - mp.mpf(3) / 4) for h in hs]
+            slopes = [mp.log(res[i] / res[i + 1]) / mp.log(hs[i] / hs[i + 1]) for i in range(len(hs) - 1)]
+            assert all(abs(s - 1) < 0.02 for s in slopes), (m, slopes)
+            assert abs(C_reference(m * mp.pi - hs[-1]) * mp.sin(m * mp.pi - hs[-1]) ** 2 - 3 * mp.pi / 16) > mp.mpf("0.1")
