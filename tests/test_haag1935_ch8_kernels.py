@@ -1,10 +1,13 @@
-"""The kernels of chapter VIII (issue #13): n² of the inverted uniform blade stated in ε (eq034_n2_inverted_eps),
-G of (314) and C of (317), emitted in Python and C (K in ε is a Result without a kernel: see its note).
+"""The kernels of chapter VIII (issue #13): n² and K of the inverted uniform blade stated in ε
+(eq034_n2_inverted_eps, eq036_K_inverted_eps), G of (314) and C of (317) on the windows n = 0 (eq317_C) and
+n = 1 (eq317_C_window1), emitted in Python and C.
 
 References, never the forms under test:
 - n² and K: the eigenproblem K q = n² 𝕄 q of the rigid pendulum on the directly solved inverted blade
   (pendsym.suspension, g < 0), the mode whose node is above G (the truth of eq034.n2_inverted's check), at
   a = a1 − ελ with a1 where det K = 0 (:func:`derivations.haag1935.ch8_inverted.table_kernels.node_mode`);
+  K also from the memoir's definitions at 60 digits: (36) K = (a + wλ)/(a + z − vλ), z the positive root of the
+  quadratic (30) of chapter I (mpmath polyroots), with vλ, wλ of (313), β1 of (307), a = a1 − ελ, a1 of (310);
 - G and C: the inverted blade's w, the solution of w'' = w/M (9) with M = −λ²/u², w'(0) = 0, w'(λ) = 1 (checked
   below), G2 = wλ − F2 (81) and F4 = ∫w'^4 ds (282) by mpmath quadrature: G = −G2/(ελ) ((262) with ε → −ε, (312)),
   C = (wλ − F4)/G2 (284).
@@ -17,6 +20,7 @@ import shutil
 
 import mpmath as mp
 import pytest
+import sympy as sp
 
 from derivations.haag1935.ch7_gravity import truth as gravity_truth
 from derivations.haag1935.ch8_inverted import kernels as ch8_kernels
@@ -27,12 +31,12 @@ from pendsym.emit.kernels.measure import reference
 BOUND = 4.0
 DPS = 40
 LAM = mp.mpf(1)     # G and C do not depend on λ
-NAMES = {"eq034_n2_inverted_eps": 5, "eq314_G": 2, "eq317_C": 1}
+NAMES = {"eq034_n2_inverted_eps": 5, "eq314_G": 2, "eq317_C": 1, "eq036_K_inverted_eps": 4, "eq317_C_window1": 1}
 
 
 @pytest.fixture(scope="module")
 def emitted(generated, tmp_path_factory):
-    """{name: {language: callable}} of the four kernels as generated."""
+    """{name: {language: callable}} of the five kernels as generated."""
     spec = importlib.util.spec_from_file_location("ch8_haag1935", generated / "python" / "haag1935.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
@@ -71,9 +75,9 @@ def C_reference(u):
     return (w_blade(u, LAM) - mp.quad(lambda s: (mp.sin(u * s / LAM) / mp.sin(u)) ** 4, [0, LAM])) / G2(u)
 
 
-def kappa_of(f, p):
-    """κ = Σ|x_i ∂f/∂x_i|/|f| by central differences (step 1e-15 relative) at DPS digits."""
-    with mp.workdps(DPS):
+def kappa_of(f, p, dps=DPS):
+    """(f(p), κ = Σ|x_i ∂f/∂x_i|/|f|) by central differences (step 1e-15 relative) at dps digits."""
+    with mp.workdps(dps):
         xs = [mp.mpf(v) for v in p]
         value, total = f(*xs), 0
         for i, x in enumerate(xs):
@@ -224,13 +228,18 @@ def test_kernels_hold_the_contract_at_their_switches(emitted, code):
 
 def test_outside_the_domain_is_a_domain_error(emitted):
     """ValueError in Python, NaN in C: u beyond the window (π and above: the circular forms have no limit at ∞,
-    so u = inf is a domain error), ε ≤ 0 or above 1/4, NaN."""
+    so u = inf is a domain error; for C on the window n = 1, outside 2x1 ≤ u < 3π), ε ≤ 0 or above 1/4, NaN."""
     nxt = math.nextafter
     bad = {"eq034_n2_inverted_eps": [(0.1, 0.05, 0.1, 3.1415926535897936, 9.81), (0.1, 0.05, 0.1, math.inf, 9.81),
                                      (0.0, 0.05, 0.1, 1.0, 9.81), (nxt(0.25, 1), 0.05, 0.1, 1.0, 9.81),
                                      (math.nan, 0.05, 0.1, 1.0, 9.81), (0.1, 0.05, 0.1, 0.0, 9.81)],
            "eq314_G": [(0.0, 1e-3), (3.1415926535897936, 1e-3), (math.inf, 1e-3), (1.0, 0.0), (1.0, nxt(0.1, 1))],
-           "eq317_C": [(-5e-324,), (3.1415926535897936,), (9.0,), (math.inf,), (math.nan,)]}
+           "eq317_C": [(-5e-324,), (3.1415926535897936,), (9.0,), (math.inf,), (math.nan,)],
+           "eq036_K_inverted_eps": [(0.0, 0.05, 0.1, 1.0), (nxt(0.25, 1), 0.05, 0.1, 1.0), (0.1, 0.05, 0.1, 0.0),
+                                    (0.1, 0.05, 0.1, 3.1415926535897936), (0.1, 0.05, 0.1, math.inf),
+                                    (math.nan, 0.05, 0.1, 1.0)],
+           "eq317_C_window1": [(nxt(8.986818915818128, 0),), (nxt(9.42477796076938, 10),), (1.0,), (math.inf,),
+                               (math.nan,)]}
     for name, points in bad.items():
         for lang, fn in emitted[name].items():
             for p in points:
@@ -274,3 +283,128 @@ def test_n2_at_the_audit_worst_point(emitted):
         value, kappa = f(*[mp.mpf(v) for v in p]), float(cond(*[mp.mpf(v) for v in p]))
     for lang, fn in emitted["eq034_n2_inverted_eps"].items():
         assert ulp_error(fn(*p), value) <= BOUND * max(1.0, kappa), lang
+
+
+# ---------------------------------------------------------------- K of (36): the memoir's definitions and the eigenproblem
+def K_memoir(eps, R, lam, u):
+    """(36) K = (a + wλ)/(a + z − vλ) at 60 digits: vλ = −(λ/u) tan(u/2), wλ = −λ/(u tan u) (313), β1 = λ(1 − 2 tan(u/2)/u)
+    (307), a = a1 − ελ with a1 = λ/(u tan u) (310), z the positive root of (30): z² + z(a² + aβ1 − 2avλ + β1wλ + vλ² −
+    R²)/(a − vλ) − R² = 0 (chapter I, as ch1_model.foci_quadratic prints it), by mpmath polyroots."""
+    with mp.workdps(60):
+        eps, R, lam, u = (mp.mpf(x) for x in (eps, R, lam, u))
+        vl = -lam * mp.tan(u / 2) / u
+        wl = -lam / (u * mp.tan(u))
+        b1 = lam * (1 - 2 * mp.tan(u / 2) / u)
+        a = lam / (u * mp.tan(u)) - eps * lam
+        coef = (a**2 + a * b1 - 2 * a * vl + b1 * wl + vl**2 - R**2) / (a - vl)
+        z = max(mp.re(r) for r in mp.polyroots([1, coef, -R**2], maxsteps=200, extraprec=200))
+        return (a + wl) / (a - vl + z)
+
+
+def test_the_K_reference_is_the_eigenproblem():
+    """The memoir's-definitions reference agrees with the eigenproblem of the directly solved blade (30 digits) at
+    u = 1, ε = 1/10 (R = 0.05, λ = 1/10), so it is the slow mode's K and not the fast one's."""
+    _, K = node_mode("u=1", "1/10", 30)
+    with mp.workdps(30):
+        assert abs(K_memoir(mp.mpf(1) / 10, mp.mpf("0.05"), mp.mpf(1) / 10, 1) / K - 1) < mp.mpf(10) ** -25
+
+
+def test_K_kernel_against_one_eigenproblem_point(emitted):
+    """Quick: K at u = 1, ε = 1/10, r = R/λ = 1/2 from the eigenproblem (K = −n²z'/g of the mode whose node is
+    above G); the doubles 0.05 and 0.1 have the ratio 1/2 exactly, and a kernel scaled by 1 + 3e-15 would fail."""
+    _, K = node_mode("u=1", "1/10", 30)
+    value, kappa = kappa_of(K_memoir, (0.1, 0.05, 0.1, 1.0))
+    for lang, fn in emitted["eq036_K_inverted_eps"].items():
+        got = fn(0.1, 0.05, 0.1, 1.0)
+        assert ulp_error(got, K) <= BOUND * max(1.0, kappa), (lang, got, kappa)
+
+
+# the worst points of make audit (2.46 scaled, κ = 1.03) and of a 3,000-point search with local climbs (κ ≈ 1 near u = 2.03, where
+# 1/(u sin u) is stationary and its rounding is not covered by κ); the branch p = 0 of the root (r² = d² − εb at
+# u = 1, ε = 1/10, λ = 1); corners of the box (u = 3 for π: at the double below π, κ ~ u/(π − u) ~ 1e16 and the
+# central differences of kappa_of straddle π)
+K_POINTS = ((0.00012433127694323583, 0.0016348740104686792, 0.37363152135961775, 2.018743962723669),
+            (1.0284992483864916e-06, 0.019126446379176733, 2.627992054067572, 2.0429557609057576),
+            (1e-09, 0.001, 10.0, 3.0), (0.25, 2.0, 0.001, 1e-06), (0.25, 0.001, 10.0, 2.0287578381104345),
+            (1e-09, 2.0, 0.001, 3.0), (1e-09, 0.001, 10.0, 1e-06), (0.1, 1.0926410225918324, 1.0, 1.0),
+            (0.1, 1.0926410225918326, 1.0, 1.0), (0.1, 1.0926410225918328, 1.0, 1.0))
+
+
+def test_K_kernel_holds_the_contract_against_the_memoir_definitions(emitted):
+    for p in K_POINTS:
+        value, kappa = kappa_of(K_memoir, p)
+        for lang, fn in emitted["eq036_K_inverted_eps"].items():
+            assert ulp_error(fn(*p), value) <= BOUND * max(1.0, kappa), (lang, p, kappa)
+
+
+def test_K_kernel_scaled_by_3e_15_fails_at_the_worst_point(emitted):
+    """κ ≈ 1.04 at the search's worst point: 1 + 3e-15 is 13 ulp, over 4 × κ; the kernel itself holds 4 × κ."""
+    p = K_POINTS[0]
+    value, kappa = kappa_of(K_memoir, p)
+    assert kappa < 1.5
+    for lang, fn in emitted["eq036_K_inverted_eps"].items():
+        got = fn(*p)
+        assert ulp_error(got, value) <= BOUND * max(1.0, kappa), lang
+        assert ulp_error(got * (1 + 3e-15), value) > BOUND * max(1.0, kappa), lang
+
+
+@pytest.mark.slow
+def test_K_kernel_against_the_eigenproblem_at_the_worst_point(emitted):
+    """The eigenproblem of the directly solved blade at 50 digits at the worst point's u and ε, the blade λ = 1/10 and
+    R = λ·(R/λ of the point) (K depends on R and λ through R/λ alone): within 4 ulp × max(1, κ)."""
+    from derivations.haag1935.ch8_inverted import truth
+    eps, R, lam, u = K_POINTS[0]
+    key = f"u={sp.Rational(u)}"
+    sus = truth.truth.direct(key, truth.SIGN, 0, 50)
+    with mp.workdps(sus.wdps):
+        env = truth.truth.numbers(key, truth.SIGN, 50)
+        a = env["a_1"] - mp.mpf(eps) * env["lambda"]
+        R_t = mp.mpf(R) / mp.mpf(lam) * env["lambda"]
+        n2, zp = min(truth.truth.eigenmodes(sus, a, R_t, env["g"]), key=lambda pair: pair[1])
+        K = -n2 * zp / env["g"]
+    _, kappa = kappa_of(K_memoir, K_POINTS[0])
+    for lang, fn in emitted["eq036_K_inverted_eps"].items():
+        assert ulp_error(fn(*K_POINTS[0]), K) <= BOUND * max(1.0, kappa), lang
+
+
+# ---------------------------------------------------------------- C on the window n = 1 (2x1 < u < 3π)
+C1_US = (8.986818915818128, 9.0, 9.029286992629844, 9.2, 9.4, 9.42477, 9.42477796076938)   # 9.0293: make audit's worst
+
+
+def test_C_window1_kernel_holds_the_contract_against_the_quadrature(emitted):
+    """The quadrature at 50 digits (the audit's worst point among them)."""
+    for u in C1_US:
+        value, kappa = kappa_of(C_reference, (u,), 50)
+        for lang, fn in emitted["eq317_C_window1"].items():
+            got = fn(u)
+            assert ulp_error(got, value) <= BOUND * max(1.0, kappa), (lang, u, kappa)
+
+
+def test_C_window1_domain_is_the_window():
+    """The declared ends are 2x1 (x1: tan x = x, (308)) rounded up and 3π rounded down: the window n = 1 of (309)."""
+    arg = ch8_kernels.U_WINDOW1
+    with mp.workdps(40):
+        end = 2 * mp.findroot(lambda x: mp.tan(x) - x, 4.49)
+        assert mp.mpf(arg.lo) >= end and mp.mpf(math.nextafter(arg.lo, 0)) < end
+        assert mp.mpf(arg.hi) < 3 * mp.pi and mp.mpf(math.nextafter(arg.hi, math.inf)) >= 3 * mp.pi
+
+
+def test_C_window1_kernel_scaled_by_4e_14_fails_at_the_window_end(emitted):
+    """κ ≥ 37 on the whole window n = 1 (1/sin²u): a scaling by 1 + 4e-14 (≥ 180 ulp) is over 4κ at its lower end."""
+    u = C1_US[0]
+    value, kappa = kappa_of(C_reference, (u,), 50)
+    for lang, fn in emitted["eq317_C_window1"].items():
+        assert ulp_error(fn(u) * (1 + 4e-14), value) > BOUND * max(1.0, kappa), lang
+
+
+def test_C_grows_as_three_quarters_over_sin_squared_at_the_windows_ends():
+    """The kernels' docstrings: C ~ 3/(4 sin²u) as u → π (window n = 0) and u → 3π (window n = 1), not 3π/(16 sin²u)
+    as session 9's docstring of eq317_C said.  From the quadrature, C sin²u − 3/4 falls like (mπ − u)¹: its fitted
+    order over h = mπ − u = 1e-2 … 1e-5 is 1 (rule 3), so the limit is 3/4 and nothing else."""
+    with mp.workdps(DPS):
+        for m in (1, 3):
+            hs = [mp.mpf(10) ** -k for k in range(2, 6)]
+            res = [abs(C_reference(m * mp.pi - h) * mp.sin(m * mp.pi - h) ** 2 - mp.mpf(3) / 4) for h in hs]
+            slopes = [mp.log(res[i] / res[i + 1]) / mp.log(hs[i] / hs[i + 1]) for i in range(len(hs) - 1)]
+            assert all(abs(s - 1) < 0.02 for s in slopes), (m, slopes)
+            assert abs(C_reference(m * mp.pi - hs[-1]) * mp.sin(m * mp.pi - hs[-1]) ** 2 - 3 * mp.pi / 16) > mp.mpf("0.1")

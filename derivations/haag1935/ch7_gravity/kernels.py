@@ -18,7 +18,8 @@ The inverted blade's (chapter VIII, n°103) G of (314) and C of (317) are declar
 window n = 0 of (309), 0 < u < π (β1 < 0 (304)): u ∈ [1e-6, π] (π the double below π).  Both grow as
 1/sin²u towards the window's end (a pole at u = π, where κ ~ 2π/(π − u) lets the error grow with it).
 The window n = 1 (2x1 < u < 3π) has a1 < 0 throughout (tan u < 0 there, (310)): no body with a > 0 is
-critical there, and one kernel is emitted per Result, so it is not emitted (C measures 0.05 there).
+critical there.  One kernel is emitted per Result: C on that window is chapter VIII's Result eq317.C_window1
+(:mod:`..ch8_inverted.table_kernels`, its kernel declared in :mod:`..ch8_inverted.kernels`).
 """
 from __future__ import annotations
 
@@ -49,4 +50,4 @@ G_INVERTED_KERNEL = KernelSpec(args=(U_WINDOW, EPS_ARG),
 C_INVERTED_KERNEL = KernelSpec(args=(U_WINDOW,),
                                doc="C = (3/8)(4u − sin 4u)/(sin²u(2u + sin 2u)) (317), the isochronism coefficient "
                                    "of the gravity pendulum on an inverted uniform blade; C → 1 as u → 0, "
-                                   "C ~ 3π/(16 sin²u) as u → π (the window's end).")
+                                   "C ~ 3/(4 sin²u) as u → π (the window's end).")

@@ -1,5 +1,6 @@
 """Haag 1935, chapter VIII: n² and K of the inverted uniform blade stated in ε = (a1 − a)/λ (312), for the
-kernels (:mod:`.kernels`); checked against the eigenproblem of the directly solved inverted blade."""
+kernels (:mod:`.kernels`), checked against the eigenproblem of the directly solved inverted blade; and C of (317)
+on the window n = 1 of (309), checked against the shot blade's quadratures."""
 from __future__ import annotations
 
 import functools
@@ -10,10 +11,11 @@ import sympy as sp
 from pendsym import checks, suspension
 from pendsym.result import Spec
 
+from ..ch7_gravity import truth as gravity_truth
 from ..common import rid, src
 from . import kernels, truth
 
-EPS_POINTS = ("1/1000", "1/10", "2/5")     # ε: near the critical distance, and up to the kernel's ε ≤ 1/2
+EPS_POINTS = ("1/1000", "1/10", "2/5")     # ε: near the critical distance, and above the kernels' ε ≤ 1/4
 BLADES = truth.N2_BLADES + ("u=5/2",)      # and above π/2, where a1 < 0 (311): the kernels' window is (0, π)
 
 
@@ -44,6 +46,33 @@ def eps_check(which: int, what: str) -> checks.Values:
                          points=points, confirm=lambda dps: {"n2": node_mode(truth.N2_BLADES[0], EPS_POINTS[0], dps)[which]})
 
 
+WINDOW1_US = ("9", "46/5", "47/5")     # inside the window n = 1, 2x1 = 8.987 < u < 3π = 9.425 (309); 9.4 near its end
+
+
+@functools.lru_cache(maxsize=8)
+def C_shot(key: str, dps: int = 30) -> mp.mpf:
+    """(284): C = (wλ − ∫w'^4 ds)/(wλ − ∫w'^2 ds) of the shot inverted uniform blade ``key`` (M = −(λ/u)²)."""
+    sol = gravity_truth.shot(key, -1, dps)
+    with mp.workdps(sol.wdps):
+        return (sol.wl - sol.F(4, 0)) / (sol.wl - sol.F(2, 0))
+
+
+def window1_check() -> checks.Values:
+    def points(level, dps):
+        for x in WINDOW1_US:
+            yield checks.Point(f"u={x}", {"u": suspension.number(sp.Rational(x)), "lambda": mp.mpf("0.1")},
+                               C_shot(f"u={x}", dps))
+    return checks.Values(truth="shot inverted uniform blade (pendsym.blade, M = −(λ/u)², λ = 1/10) at u inside the "
+                               "window n = 1 (2x1 < u < 3π), wλ and ∫w'^n by Gauss–Legendre quadrature",
+                         points=points, confirm=lambda dps: {"C": C_shot(f"u={WINDOW1_US[0]}", dps)}, kind="quadrature")
+
+
+def C_window1(deps) -> sp.Expr:
+    """(317) on the window n = 1 of (309): the derived C of (317) (dsolve with M < 0), whose kernel is declared on
+    2x1 < u < 3π (:data:`.kernels.C_WINDOW1_KERNEL`); the claim checked is that (317) holds there too."""
+    return deps[rid(317, "C")].derived
+
+
 def specs() -> tuple[Spec, ...]:
     ends = (rid(159, "vl"), rid(159, "beta1"), rid(159, "wl"), rid(310, "a1"))
     return (
@@ -55,8 +84,16 @@ def specs() -> tuple[Spec, ...]:
                   "Stated in ε the existence condition (305) is ε > 0 for every u of the window (309)."),
         Spec(rid(36, "K_inverted_eps"), "K of (36) of the inverted uniform blade at a = a1 − ελ (312), for the kernel",
              src(101, "36"), "K", kernels.K_eps, deps=ends, check=eps_check(1, "K = −n²z'/g"),
-             note="Not printed: (36) with u → iu (n°101), z as for n², a = a1 − ελ: K = −ελS/(D(2R² + S)) < 0 (302). "
-                  "Its kernel (kernels.K_EPS_KERNEL) is not asked for: the form the engine emits measured 0.83 scaled "
-                  "on the derive's sample but 5.02 in make audit (ε = 9.1e-7, u = 2.066), 3.5–3.9 ulp on random "
-                  "points of every part of the window."),
+             kernel=kernels.K_EPS_KERNEL,
+             note="Not printed: (36) K = (a + wλ)/(a + z − vλ) with u → iu (n°101), a = a1 − ελ (a + wλ = −ελ) and "
+                  "z = λζ, ζ the positive root of (30) over λ³ written without cancellation: K = −ε/(d + ζ) < 0 (302), "
+                  "d = 1/(u sin u) − ε, r = R/λ.  Session 9's form −ελS/(D(2R² + S)) was split by the kernel engine "
+                  "into a polynomial in ε, R, λ whose leaves in u cancel (make audit 5.02 scaled at ε = 9.1e-7, "
+                  "u = 2.066): not emitted then."),
+        Spec(rid(317, "C_window1"), "C of (317) on the window n = 1 (2x1 < u < 3π) of the inverted uniform blade",
+             src(103, "317"), "C", C_window1, deps=(rid(317, "C"),), check=window1_check(),
+             kernel=kernels.C_WINDOW1_KERNEL,
+             note="Not printed as such: (317) is stated for the inverted blade, whose windows of stability are "
+                  "2x_n < u < (2n + 1)π (309); the Result eq317.C carries the kernel of the window n = 0, this one "
+                  "the kernel of the window n = 1 (one kernel per Result), checked there against the shot blade."),
     )
