@@ -479,7 +479,7 @@ def _leaf_groups(e: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict]:
     K of (36)), which gets its own stable form (its cancellation is then the leaf's)."""
     hard = set(leaves)
     groups: dict = {}
-    for t in sp.Add.make_args(sp.expand(e)):
+    for t in sp.Add.make_args(sp.expand(e, deep=False)):
         mine = [f for f in sp.Mul.make_args(t) if f.free_symbols <= hard]       # numbers and leaves
         rest = [f for f in sp.Mul.make_args(t) if not f.free_symbols <= hard]
         groups.setdefault(sp.Mul(*rest), []).append(sp.Mul(*mine))
@@ -505,8 +505,9 @@ def near_one_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | Non
     num, den = sp.fraction(skeleton)
     if den == 1 or not den.is_Add or not num.is_Add:
         return None
-    terms = lambda x: len(sp.Add.make_args(sp.expand(x)))
-    diff = sp.expand(num - den)
+    # expanded at the top only: a Piecewise (K's root z) is kept whole, the unit K and n² share
+    terms = lambda x: len(sp.Add.make_args(sp.expand(x, deep=False)))     # noqa: E731
+    diff = sp.expand(num - den, deep=False)
     if terms(diff) >= terms(num) + terms(den):
         return None
     diff, new = _leaf_groups(diff, leaves)
