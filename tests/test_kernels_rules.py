@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 
 from pendsym.emit import kernels as kn
-from pendsym.emit.kernels import rules
+from pendsym.emit.kernels import rules, skeleton_forms
 from pendsym.emit.kernels.measure import ref_dps, reference
 from pendsym.result import KernelArg
 
@@ -78,6 +78,51 @@ def test_vertex_form_keeps_the_skeleton_and_adds_two_leaves():
     diff = vskel.xreplace(vleaves) - skeleton.xreplace(leaves)
     assert all(abs(sp.N(diff.subs({K: kv, u: uv}), 30)) < 1e-25 for kv in (-sp.Rational(3, 2), sp.Rational(1, 5), 2)
                for uv in (sp.Rational(3, 10), sp.Rational(5, 2)))
+
+
+def _as_expr(form: sp.Expr) -> sp.Expr:
+    """A skeleton form with its Select read in both branches: (the Select's test, form if > 0, form else)."""
+    sel = next(iter(form.atoms(rules.Select)))
+    return sel.args[0], form.xreplace({sel: sel.args[1]}), form.xreplace({sel: sel.args[2]})
+
+
+def test_taylor_form_in_K_keeps_the_quartic_and_picks_a_centre_where_it_cancels():
+    """(Issue #11, F of (170).)  A quartic in K about a centre c: the same function, c among the domain's
+    thirteenths, the new leaves the exact Taylor coefficients; offered only for degree ≥ 3 and where it gains."""
+    K = sp.Symbol("K")
+    ls = sp.symbols("leaf_0:5")
+    # a quartic whose terms cancel near K = −1 for u ≈ 1 (its value there ≪ the sum of its terms)
+    leaves = {ls[0]: 1 + u, ls[1]: 4 + 4 * u, ls[2]: 6 + 6 * u, ls[3]: 4 + 4 * u, ls[4]: 1 + u + u**3 / 100}
+    skeleton = sum(ls[4 - i] * K**i for i in range(5))
+    args = (KernelArg("u", 0.5, 2.0), KernelArg("K", -3.0, 3.0, log=False))
+    got = skeleton_forms.near_taylor_form(skeleton, leaves, args)
+    assert got is not None
+    form, new = got
+    test, taylor, plain = _as_expr(form)
+    assert plain == skeleton and len(new) > len(leaves)
+    for kv in (-sp.Rational(3, 2), -1, sp.Rational(1, 5)):
+        for uv in (sp.Rational(3, 5), sp.Rational(7, 4)):
+            at = {K: kv, u: uv}
+            assert abs(sp.N((taylor.xreplace(new) - skeleton.xreplace(leaves)).subs(at), 30)) < 1e-25
+    # near K = −1 the Taylor form is the one evaluated (its terms' magnitudes are the smaller)
+    assert sp.N(test.xreplace(new).subs({K: -1, u: 1}).replace(rules.Magnitude, abs)) > 0
+    assert skeleton_forms.near_taylor_form(ls[0] * K**2 + ls[1] * K + ls[2], leaves, args) is None      # a quadratic: vertex form
+
+
+def test_one_plus_form_keeps_the_ratio_and_gathers_the_leaves():
+    """(Issue #11, K of (36).)  (a + λ w)/(a + λ v + z) as 1 + (λ(w − v) − z)/(a + λ v + z), w − v one new leaf
+    (simplified in exponentials: 1/(u th u) − th(u/2)/u = 1/(u sh u)), used where 1 + q ≥ ½."""
+    a, lam, zz = sp.symbols("a lambda z", positive=True)
+    w, v = sp.symbols("leaf_0 leaf_1")
+    leaves = {w: 1 / (u * sp.tanh(u)), v: sp.tanh(u / 2) / u}
+    skeleton = (a + lam * w) / (a + lam * v + zz)
+    form, new = skeleton_forms.near_one_form(skeleton, leaves)
+    test, near_one, plain = _as_expr(form)
+    assert plain == skeleton and set(new.values()) - set(leaves.values()) == {1 / (u * sp.sinh(u))}
+    at = {a: sp.Rational(1, 30), lam: 9, zz: sp.Rational(1, 10**5), u: sp.Rational(3, 2)}
+    assert abs(sp.N((near_one.xreplace(new) - skeleton.xreplace(leaves)).subs(at), 30)) < 1e-25
+    assert sp.N(test.xreplace(new).subs(at)) > 0
+    assert skeleton_forms.near_one_form(a * lam * w / (a + lam * v), leaves) is None      # nothing shared: no rewrite
 
 
 def _scaled(f, e, syms, p):

@@ -19,7 +19,7 @@ from ...result import KernelArg, Result
 from .compile import emitted_py
 from .leaves import hard_argument, stable_forms
 from .measure import BOUND, Accuracy, _symbols, errors, measure, py_callable
-from .rules import NEAR_VERTEX, NEAR_ZERO, REWRITES, rounded_multiples
+from .rules import NEAR_ONE, NEAR_TAYLOR, NEAR_VERTEX, NEAR_ZERO, REWRITES, rounded_multiples
 from .sampling import kernel_sample, sample_points, vertex_points
 
 HEADROOM = 0.25         # a rewrite over a quarter of the bound on the sample lets the stable forms compete: the
@@ -95,7 +95,7 @@ def choose_form(expr: sp.Expr, args: Sequence[KernelArg], seed: str) -> Choice:
     for label, form, notes in stable_forms(expr, args, vertex=True):
         # measured as emitted (statements: a leaf's pieces nest too deep for one Python expression)
         acc = measure(emitted_py(seed, args, form), expr, args, full)
-        preferred = label == NEAR_VERTEX.label and acc.max_scaled <= BOUND
+        preferred = label in (NEAR_VERTEX.label, NEAR_TAYLOR.label, NEAR_ONE.label) and acc.max_scaled <= BOUND
         if acc.max_scaled < best.accuracy.max_scaled or preferred:
             hard = hard_argument(expr, args).name
             best = Choice(f"piecewise in {hard}: series below a switch, e^(-{hard}) or derived form above{label}",

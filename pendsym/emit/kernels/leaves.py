@@ -233,7 +233,7 @@ def stable_forms(expr: sp.Expr, args: Sequence[KernelArg],
         return []
     a, x, skeleton, leaves = split
     variants = [(rule.label, got) for rule in (SKELETONS if vertex else (PLAIN,))
-                if (got := rule(skeleton, leaves)) is not None]
+                if (got := rule(skeleton, leaves, tuple(args))) is not None]
     forms: dict = {}
     out = []
     for label, (skel, lv) in variants:

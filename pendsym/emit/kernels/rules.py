@@ -8,7 +8,8 @@ walk the tuples in order, and measurement decides.
 - :data:`NEAR_ZERO`: the series in t of a form that cancels as t → 0, used below a phase;
 - :data:`FAR_FORMS`: the forms of a leaf c(x) (a function of the hard argument alone) for
   large x: as derived, in e^{−x/q} with expm1, or its limit plus an e^{−x} remainder;
-- :data:`SKELETONS`: the forms of the skeleton around the leaves: plain, or vertex form.
+- :data:`SKELETONS`: the forms of the skeleton around the leaves: plain, vertex form (a
+  quadratic), Taylor form about a point in K (degree ≥ 3), or 1 + (N − D)/D (a ratio).
 
 The series of a leaf below a switch and its Taylor pieces between knots (the near and
 middle pieces, with SWITCHES and KNOTS) are the rules of :mod:`.series`.
@@ -23,6 +24,7 @@ from sympy.codegen.cfunctions import expm1
 
 from ...result import KernelArg
 from .plan import Grouped, Magnitude, Select
+from .skeleton_forms import near_one_form, near_taylor_form
 
 # ----------------------------------------------------------------- whole-expression rewrites
 
@@ -325,10 +327,11 @@ class SkeletonForm:
     (skeleton, leaves), or None where it does not apply; `label` is appended to the rule's name."""
 
     label: str
-    apply: Callable[[sp.Expr, dict], tuple[sp.Expr, dict] | None]
+    apply: Callable[..., tuple[sp.Expr, dict] | None]
+    with_args: bool = False      # apply(skeleton, leaves, args): the rule needs the kernel's declared domains
 
-    def __call__(self, skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | None:
-        return self.apply(skeleton, leaves)
+    def __call__(self, skeleton: sp.Expr, leaves: dict, args=()) -> tuple[sp.Expr, dict] | None:
+        return self.apply(skeleton, leaves, args) if self.with_args else self.apply(skeleton, leaves)
 
 
 def near_vertex_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | None:
@@ -357,4 +360,6 @@ def near_vertex_form(skeleton: sp.Expr, leaves: dict) -> tuple[sp.Expr, dict] | 
 PLAIN = SkeletonForm("", lambda skeleton, leaves: (skeleton, leaves))
 VERTEX = SkeletonForm(", in vertex form", vertex_form)
 NEAR_VERTEX = SkeletonForm(", in vertex form where it cancels less", near_vertex_form)
-SKELETONS: tuple[SkeletonForm, ...] = (PLAIN, VERTEX, NEAR_VERTEX)
+NEAR_TAYLOR = SkeletonForm(", about a point in K where it cancels less", near_taylor_form, with_args=True)
+NEAR_ONE = SkeletonForm(", as 1 + (N − D)/D where that is over 1/2", near_one_form)
+SKELETONS: tuple[SkeletonForm, ...] = (PLAIN, VERTEX, NEAR_VERTEX, NEAR_TAYLOR, NEAR_ONE)
