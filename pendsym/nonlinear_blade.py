@@ -184,11 +184,14 @@ def _linear_guess(blade: linear_blade.Blade, a, R, g, theta0, tau, dps, mode_nam
 
 
 def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30, mode: str = "principal",
-          law=None) -> Orbit:
+          law=None, linear_ladder: bool = False) -> Orbit:
     """The oscillation of amplitude θ0 continued from the linear ``mode`` ("principal" or "slow", see
     :func:`_linear_guess`), by collocation at ``nodes`` nodes (see the module).  ``law``: a bending moment not
     linear in the curvature (an object with the ``end_state`` of this module's signature, e.g.
-    :class:`pendsym.bending_law.CubicLaw`); None for Mφ'.
+    :class:`pendsym.bending_law.CubicLaw`); None for Mφ'.  With ``linear_ladder``, the first rung is the linear
+    law's (shared with the linear-law orbit of the same θ0 in this process): for a law that moves the orbit by
+    less than LADDER_DPS digits it is as good a start and chord Jacobian, and the law's own first rung is saved;
+    the root returned is still the law's.
 
     A precision ladder: the collocation solved at ``LADDER_DPS`` digits from the linear guess
     (:func:`_first_stage`, shared by every precision), then the chord method at ``dps`` digits from there with
@@ -196,7 +199,7 @@ def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30,
     instead of six or seven).  Only the root of the ``dps``-digit system is returned (its residual is
     tested at that precision): the first stage is a starting point."""
     wdps = working_dps(blade, dps)
-    u0, jacobian, omega2_lin = _first_stage(blade, a, R, g, theta0, nodes, mode, law)
+    u0, jacobian, omega2_lin = _first_stage(blade, a, R, g, theta0, nodes, mode, None if linear_ladder else law)
     with mp.workdps(wdps):
         a, R, g, theta0 = (suspension.number(x) for x in (a, R, g, theta0))
         problem = (blade, law, a, R, g, theta0, omega2_lin, nodes)
@@ -357,22 +360,24 @@ class Track:
     beta: tuple
 
 
-def track(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None, law=None) -> Track:
+def track(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None, law=None,
+          linear_ladder: bool = False) -> Track:
     """The principal oscillation of amplitude θ0 on the exact blade, to ``dps`` digits: its period and the
-    end A's (θ, α, β) at the nodes; ``law`` as in :func:`orbit`.
+    end A's (θ, α, β) at the nodes; ``law`` and ``linear_ladder`` as in :func:`orbit`.
 
     Cached by its inputs (the blade's λ and M, a, R, g, θ0, dps, nodes; the law's key and its module's hash)
     in :mod:`pendsym.cache`.
     """
     nodes = nodes_for(theta0, dps) if nodes is None else nodes
-    of_law = () if law is None else (law.key(), keys.file_hash(keys.module_file(type(law).__module__)))
+    of_law = () if law is None else (law.key(), keys.file_hash(keys.module_file(type(law).__module__)),
+                                      str(linear_ladder))
     key = keys.digest(("nonlinear_blade.track", VERSION, keys.FORMAT, *keys.versions(),
                        keys.file_hash(keys.module_file(__name__)),
                        sp.srepr(blade.length), sp.srepr(blade.M), str(a), str(R), str(g), str(theta0),
                        str(dps), str(nodes), *of_law))
 
     def compute():
-        o = orbit(blade, a, R, g, theta0, nodes, dps, law=law)
+        o = orbit(blade, a, R, g, theta0, nodes, dps, law=law, linear_ladder=linear_ladder)
         return (o.period, o.theta, o.alpha, o.beta)
     return Track(*cache.memo(key, compute))
 
