@@ -15,7 +15,7 @@
 Cost (cold): each massive-blade n² with inertia is about 1–2 s CPU (a root at 15 digits, then at 30 by the
 secant method from it: pendsym.massive_blade.principal_n2), with the weight only a single integration of the
 blade; each (141) point 0.3 s; the mass checks five roots (four points and the confirmation at 36 digits),
-the others five: (135) ≈ 7 s on the hole blade, 4 s on the uniform one, (136) ≈ 2 s.  (141) at q = 2: four
+the others five: (135) ≈ 7 s on the hole blade (its second form, with Q, on the same roots), (136) ≈ 2 s.  (141) at q = 2: four
 orbits with the law (about 2.3 s each, started from the linear law's first rung) and one at 33 digits; the
 linear-law orbits are (111)'s.
 """
