@@ -93,8 +93,9 @@ class CubicLaw:
                 a, b = mp.mpf(a), mp.mpf(b)
                 Mc = None if dMf is not None else mp.mpf(sp.N(Mf, wdps + 5))
                 ref = Mf(a) if Mc is None else Mc
-                # the state holds κ = ref·c (ref = M at the piece's start): κ is of the size of μ, so odefun's
-                # Taylor steps are those of the linear law's elastica (c itself is 1/M times larger)
+                # the state holds κ = ref·c (ref = M at the piece's start), of the size of the linear law's μ
+                # (c itself is 1/M times larger): odefun's Taylor steps are then as long as the linear law's while
+                # a2c² is small (near 1 + 3a2c² = 0 in the complex plane they shorten: a property of the law)
                 kappa = ref * curvature(mu, ref, A)
                 state = [phi, kappa, x, y]
                 if variations:

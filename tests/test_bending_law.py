@@ -14,8 +14,8 @@ from pendsym import nonlinear_blade
 S = linear_blade.S
 UNIFORM = linear_blade.Blade(sp.Rational(1, 10), sp.Rational(1, 400))
 # a jump and a taper: the curvature jumps where M does (μ is continuous), and M' enters the equations
-STEPPED = linear_blade.Blade(sp.Rational(1, 10), sp.Piecewise((sp.Rational(1, 400) * (1 + 5 * S), S < sp.Rational(1, 20)),
-                                                              (sp.Rational(1, 800), True)))
+STEPPED = linear_blade.Blade(sp.Rational(1, 10), sp.Piecewise(
+    (sp.Rational(1, 400) * (1 + 5 * S), S < sp.Rational(1, 20)), (sp.Rational(1, 800), True)))
 COMPACT = ("0.12", "0.05", "9.81")
 
 
