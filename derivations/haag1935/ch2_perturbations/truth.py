@@ -224,11 +224,13 @@ FRICTION = {"p": 1, "q": 1, "n": "1.3", "Q": "0.8", "theta_0": "0.05",
 STRENGTHS = ("0.001", "0.1")            # the scale ε of the four coefficients
 
 
+@functools.lru_cache(maxsize=16)
 def friction_cycle(eps: str, dps: int) -> tuple:
     """(T n/(2π) − 1, θ(T) − θ0) over one period from the maximum θ0 (θ' = 0) to the next maximum, for
     θ'' = −n²θ − sign(θ')(n²/Q)C|θ|^p|θ'|^q (a force that always opposes the motion), C = ε·(b, a', b', a) in
     the quadrants (θ > 0 back, θ < 0 out, θ < 0 back, θ > 0 out); odefun on each quadrant, its end (θ = 0 or
-    θ' = 0) found by findroot on the dense solution."""
+    θ' = 0) found by findroot on the dense solution.  Cached in the process: (147) and (149) read the two
+    components of the same cycles."""
     with mp.workdps(dps + 10):
         F = {k: mp.mpf(v) if isinstance(v, str) else v for k, v in FRICTION.items()}
         e = mp.mpf(eps)
