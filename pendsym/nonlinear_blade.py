@@ -183,9 +183,15 @@ def _linear_guess(blade: linear_blade.Blade, a, R, g, theta0, tau, dps, mode_nam
     return X, Y, c0, mode.n2
 
 
-def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30, mode: str = "principal") -> Orbit:
+def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30, mode: str = "principal",
+          law=None, linear_ladder: bool = False) -> Orbit:
     """The oscillation of amplitude θ0 continued from the linear ``mode`` ("principal" or "slow", see
-    :func:`_linear_guess`), by collocation at ``nodes`` nodes (see the module).
+    :func:`_linear_guess`), by collocation at ``nodes`` nodes (see the module).  ``law``: a bending moment not
+    linear in the curvature (an object with the ``end_state`` of this module's signature, e.g.
+    :class:`pendsym.bending_law.CubicLaw`); None for Mφ'.  With ``linear_ladder``, the first rung is the linear
+    law's (shared with the linear-law orbit of the same θ0 in this process): for a law that moves the orbit by
+    less than LADDER_DPS digits it is as good a start and chord Jacobian, and the law's own first rung is saved;
+    the root returned is still the law's.
 
     A precision ladder: the collocation solved at ``LADDER_DPS`` digits from the linear guess
     (:func:`_first_stage`, shared by every precision), then the chord method at ``dps`` digits from there with
@@ -193,10 +199,10 @@ def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30,
     instead of six or seven).  Only the root of the ``dps``-digit system is returned (its residual is
     tested at that precision): the first stage is a starting point."""
     wdps = working_dps(blade, dps)
-    u0, jacobian, omega2_lin = _first_stage(blade, a, R, g, theta0, nodes, mode)
+    u0, jacobian, omega2_lin = _first_stage(blade, a, R, g, theta0, nodes, mode, None if linear_ladder else law)
     with mp.workdps(wdps):
         a, R, g, theta0 = (suspension.number(x) for x in (a, R, g, theta0))
-        problem = (blade, a, R, g, theta0, omega2_lin, nodes)
+        problem = (blade, law, a, R, g, theta0, omega2_lin, nodes)
         u, _, (X, Y, C, ends, res) = _collocate(problem, u0, dps, jacobian, dps + TOL)
         n = nodes
         residual = max(abs(r) for r in res) / max(g, 1)
@@ -209,7 +215,7 @@ def orbit(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, dps: int = 30,
 
 
 @functools.lru_cache(maxsize=32)
-def _first_stage(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, mode: str):
+def _first_stage(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, mode: str, law=None):
     """The first rung of :func:`orbit`'s ladder: the scaled unknowns (X − 1, Y/θ0, c0/θ0 at the nodes, Ω/Ω_lin)
     solved at LADDER_DPS digits from the linear ``mode`` by Newton (:data:`JACOBIANS` Jacobians, then a chord
     method), the Jacobian at that root (LADDER_DPS digits), and Ω_lin (the linear mode's n² at LADDER_DPS digits: the scale of Ω in every
@@ -219,7 +225,7 @@ def _first_stage(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, mode: s
         a, R, g, theta0 = (suspension.number(x) for x in (a, R, g, theta0))
         X0, Y0, c00, omega2_lin = _linear_guess(blade, a, R, g, theta0, _operators(nodes, wdps)[0], LADDER_DPS, mode)
         u0 = [x - 1 for x in X0] + [y / theta0 for y in Y0] + [c / theta0 for c in c00] + [mp.mpf(1)]
-        problem = (blade, a, R, g, theta0, omega2_lin, nodes)
+        problem = (blade, law, a, R, g, theta0, omega2_lin, nodes)
         u, _, _ = _collocate(problem, u0, LADDER_DPS, None, LADDER_DPS + LADDER_TOL)
         # the Jacobian at the root found: each chord step at full precision then gains about LADDER_DPS digits
         return u, _evaluate(problem, wdps, u, True)[5], omega2_lin
@@ -227,13 +233,14 @@ def _first_stage(blade: linear_blade.Blade, a, R, g, theta0, nodes: int, mode: s
 
 def _evaluate(problem, wdps, u, variations):
     """(X, Y, c0, ends, residuals) at the scaled unknowns u, and the Jacobian with ``variations``."""
-    blade, a, R, g, theta0, omega2_lin, n = problem
+    blade, law, a, R, g, theta0, omega2_lin, n = problem
+    end = end_state if law is None else law.end_state
     with mp.workdps(wdps):
         tau, d1, d2, row0, d2e = _operators(n, wdps)
         X = [1 + u[j] for j in range(n)]
         Y = [theta0 * u[n + j] for j in range(n)]
         C = [theta0 * u[2 * n + j] for j in range(n)]
-        ends = [end_state(blade, X[j], Y[j], C[j], wdps, variations) for j in range(n)]
+        ends = [end(blade, X[j], Y[j], C[j], wdps, variations) for j in range(n)]
         res, jac = _system(ends, X, Y, u[3 * n] * omega2_lin, omega2_lin, theta0, a, R, g, d1, d2, row0, d2e,
                            variations)
         return (X, Y, C, ends, res, jac) if variations else (X, Y, C, ends, res)
@@ -353,28 +360,33 @@ class Track:
     beta: tuple
 
 
-def track(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None) -> Track:
+def track(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None, law=None,
+          linear_ladder: bool = False) -> Track:
     """The principal oscillation of amplitude θ0 on the exact blade, to ``dps`` digits: its period and the
-    end A's (θ, α, β) at the nodes.
+    end A's (θ, α, β) at the nodes; ``law`` and ``linear_ladder`` as in :func:`orbit`.
 
-    Cached by its inputs (the blade's λ and M, a, R, g, θ0, dps, nodes) in :mod:`pendsym.cache`.
+    Cached by its inputs (the blade's λ and M, a, R, g, θ0, dps, nodes; the law's key and its module's hash)
+    in :mod:`pendsym.cache`.
     """
     nodes = nodes_for(theta0, dps) if nodes is None else nodes
+    of_law = () if law is None else (law.key(), keys.file_hash(keys.module_file(type(law).__module__)),
+                                      str(linear_ladder))
     key = keys.digest(("nonlinear_blade.track", VERSION, keys.FORMAT, *keys.versions(),
                        keys.file_hash(keys.module_file(__name__)),
                        sp.srepr(blade.length), sp.srepr(blade.M), str(a), str(R), str(g), str(theta0),
-                       str(dps), str(nodes)))
+                       str(dps), str(nodes), *of_law))
 
     def compute():
-        o = orbit(blade, a, R, g, theta0, nodes, dps)
+        o = orbit(blade, a, R, g, theta0, nodes, dps, law=law, linear_ladder=linear_ladder)
         return (o.period, o.theta, o.alpha, o.beta)
     return Track(*cache.memo(key, compute))
 
 
-def period(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None) -> mp.mpf:
+def period(blade: linear_blade.Blade, a, R, g, theta0, dps: int = 30, nodes: int | None = None,
+           law=None) -> mp.mpf:
     """The period of the principal oscillation of amplitude θ0 on the exact blade, to ``dps`` digits
-    (:func:`track`, cached)."""
-    return track(blade, a, R, g, theta0, dps, nodes).period
+    (:func:`track`, cached); ``law`` as in :func:`orbit`."""
+    return track(blade, a, R, g, theta0, dps, nodes, law).period
 
 
 def linear_period(blade: linear_blade.Blade, a, R, g, dps: int = 30) -> mp.mpf:

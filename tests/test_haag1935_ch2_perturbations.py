@@ -153,3 +153,19 @@ def test_no_dissymmetry_but_a_change_of_total_friction_is_seen():
     vals = {exp.alpha_f: alpha, exp.beta_f: beta}
     assert sp.simplify(half_a.subs(vals) - (f.a_f + f.ap_f) / 2) == 0
     assert sp.simplify(half_b.subs(vals) - (f.b_f + f.bp_f) / 2) == 0
+
+
+@pytest.mark.slow
+def test_141_at_q2_against_the_exact_blade_with_the_law_and_a_wrong_wallis_factor_fails():
+    """At θ0 = 0.0004 the exact blade with the law M(c + a2c³) changes the period as (141) says to about 10⁻⁸
+    relative (the next order, θ0²); i_3 in place of i_4 (one rank off in the Wallis factor) is 13 % off."""
+    theta0 = mp.mpf("0.0004")
+    env = truth.law_env("uniform", "compact", 30)
+    with mp.workdps(40):
+        true = truth.law_change("uniform", "compact")(theta0, 30)
+        a2 = mp.mpf(truth.LAW_A2.p) / truth.LAW_A2.q
+        formula = sp.N(truth.law_order().at(derivation.eq141(), theta0), 30)
+        assert abs(formula + env["i_4"] * a2 * env["G_4"] * theta0 ** 2 / env["Q"]) < mp.mpf("1e-40")
+        assert abs(true - formula) < mp.mpf("1e-7") * abs(true)
+        i3 = 2 / mp.pi * mp.quad(lambda x: mp.cos(x) ** 3, [0, mp.pi / 2])
+        assert abs(true - formula * i3 / env["i_4"]) > mp.mpf("0.1") * abs(true)

@@ -107,8 +107,9 @@ MEMOIR = Memoir(
            "chapter IX, blades with a hole, eqs. (321)–(346)"),
     sections=SECTIONS,
     headings=headings_by(tuple(s for sec in SECTIONS for s in sec.specs), HEADINGS),
-    # (111), (112) and n°25's claims on (64), (85) are checked on the same nonlinear orbits
-    affinity=(ch2_general.PERIOD_RESULTS + ch1_shape.ORBIT_RESULTS, ch2_clamping.TILT_RESULTS),
+    # (111), (112), n°25's claims on (64), (85) and (141) at q = 2 are checked on the same nonlinear orbits
+    affinity=(ch2_general.PERIOD_RESULTS + ch1_shape.ORBIT_RESULTS + ch2_perturbations.LAW_RESULTS,
+              ch2_clamping.TILT_RESULTS),
     cost=2.0,
     # whether the uniform blade's kernels are emitted is decided where they are declared
     kernels=ch3_uniform.KERNELS_READY,

@@ -27,7 +27,8 @@ READ_EPS = Reading("ε_1, s_1, ε_s, ε_i (the blade's moment increment in n°36
 READ_LIMITS_36 = Reading("∫_0^λ μ' (d²y'/dt²)(s' − s) ds' (mgε_1, n°36)",
                          "∫_s^λ: the elements below s (the region s < s' < λ of the next line)")
 READ_G0 = Reading("g'_0 at the end of (141)", "θ0^q (the OCR renders θ0^q as g'_0; the dimension of a_q c^q asks for "
-                  "θ0^q, and n°39 with q = 0 has no factor)", certain=False)
+                  "θ0^q, and n°39 with q = 0 has no factor; at q = 2 the exact blade with the law asks for θ0² too: "
+                  "the printed form's residual falls as θ0⁴)", certain=False)
 READ_139 = Reading("∫_0^1 in (139)", "∫_0^λ (the blade's integrals run from 0 to λ)")
 READ_F_36 = Reading("f = −(n²/(mz'))θ∭(Kv + w)/M μ'(Kφ1'' + φ2'')(s' − s) ds ds' ds''",
                     "f = −(n²/(mz'))θI_λ: the triple integral, which Haag reduces in the next lines to ∫μy² ds = I_λ")

@@ -46,8 +46,9 @@ def specs() -> tuple[Spec, ...]:
              printed=printed.eq135, check=truth.mass_order("hole", True), show_values=True,
              note="f of n°36 by (114); density ∝ width (halved over the hole)."),
         Spec(rid(135, "inertia_Q"), "ΔT/T = −KI_λ/(2mQz')", src(36, "135"), r"\frac{\Delta T}{T}",
-             step(derivation.eq135), printed=printed.eq135_Q, defs=Q_DEF, check=truth.mass_order("uniform", True),
-             note="The second form of (135), Q = K(z − z') (45)."),
+             step(derivation.eq135), printed=printed.eq135_Q, defs=Q_DEF, check=truth.mass_order("hole", True),
+             note="The second form of (135), Q = K(z − z') (45); on the blades with mass of (135), whose roots it "
+                  "shares (the uniform blade's, 5–6 s CPU, went to chapter II's check budget for (141) at q = 2)."),
         Spec(rid(135, "delay"), "the inertia always delays: ΔT/T > 0", src(36, None), r"\frac{\Delta T}{T}",
              lambda deps: deps[INERTIA].derived, deps=(INERTIA,),
              check=truth.sign_on_blades("ΔT/T of (135) > 0 (z' < 0 < z − z', I_λ > 0)")),

@@ -8,11 +8,16 @@
   and J are quadratures on the shot blade (v, w of pendsym.blade) with K, z, z' of the massless modes.
 - (141) at q = 0 and n°39: the linear eigenproblem (pendsym.suspension) on the blade M(1 + a0), whose
   T/T0 − 1 must differ from the formula by O(a0²).
+- (141) at q = 2: the exact large-deflection blade with the law M(c + a2c³) (:mod:`pendsym.bending_law` in
+  :mod:`pendsym.nonlinear_blade`'s collocation), T(θ0; a2)/T(θ0; 0) − 1 at the four amplitudes of (111) (whose
+  linear-law orbits it shares), residual O(θ0⁴).
 
 Cost (cold): each massive-blade n² with inertia is about 1–2 s CPU (a root at 15 digits, then at 30 by the
 secant method from it: pendsym.massive_blade.principal_n2), with the weight only a single integration of the
 blade; each (141) point 0.3 s; the mass checks five roots (four points and the confirmation at 36 digits),
-the others five: (135) ≈ 7 s on the hole blade, 4 s on the uniform one, (136) ≈ 2 s.
+the others five: (135) ≈ 7 s on the hole blade (its second form, with Q, on the same roots), (136) ≈ 2 s.  (141) at q = 2: four
+orbits with the law (about 2.3 s each, started from the linear law's first rung) and one at 33 digits; the
+linear-law orbits are (111)'s.
 """
 from __future__ import annotations
 
@@ -21,8 +26,9 @@ import functools
 import mpmath as mp
 import sympy as sp
 
-from pendsym import blade, checks, massive_blade, suspension, verify
+from pendsym import bending_law, blade, checks, massive_blade, nonlinear_blade, suspension, verify
 from .. import profiles
+from ..ch2_general import truth as general_truth
 from ..symbols import G_2
 from .derivation import a_q, g_fn, i_fn
 
@@ -148,6 +154,68 @@ def young_order(name: str, general: bool) -> checks.Order:
                               if general else "G2 = ∫(Kv + w)²/M ds on the shot blade"))
 
 
+# ---------------------------------------------------------------- (141) at q = 2: the exact blade with the law
+# the law EIc(1 + a2c²) = EI(c + a2c³) (137) at q = 2 with a2 constant (m²): a2(c/θ)² ≈ 4·10⁻⁴ on this blade,
+# a small law whose period change (≈ −1.2·10⁻⁵θ0²) the 30-digit truth resolves to 18 digits at the smallest θ0,
+# and whose elastica odefun integrates in as many Taylor steps as the linear law's (a2 = 10⁻² takes five
+# steps for three: the law's complex singularity, 1 + 3a2c² = 0, comes nearer)
+LAW_A2 = sp.Rational(1, 10**6)
+LAW_TRUTH = ("pendsym.nonlinear_blade with pendsym.bending_law.CubicLaw: the principal periodic oscillation of the "
+             "rigid pendulum on the exact large-deflection blade with the bending moment M(c + a2c³), against the same "
+             "blade with the linear law Mc at the same amplitude (collocation on the quarter period, 30 digits): "
+             "T(θ0; a2)/T(θ0; 0) − 1")
+
+
+def law_change(name: str, pend: str):
+    """truth(θ0, dps): T(θ0; a2)/T(θ0; 0) − 1 on the exact blade ``name`` under the pendulum ``pend``: the law's
+    part of the period, the isochronism of the linear law taken out by the ratio (the linear-law orbits are those
+    of (111), :func:`..ch2_general.truth.track`, cached by their inputs and shared)."""
+    def truth(theta0, dps):
+        a, R, g = profiles.PENDULUMS[pend]
+        theta0 = mp.nstr(mp.mpf(theta0), 40)
+        # the law moves the orbit by about 10⁻¹² (the first rung holds 12–14 digits): the linear law's first rung
+        # (shared with (111)) starts its chord steps
+        law = nonlinear_blade.track(profiles.profile(name), a, R, g, theta0, dps, law=bending_law.CubicLaw(LAW_A2),
+                                    linear_ladder=True).period
+        linear = general_truth.track(name, pend, theta0, dps).period
+        with mp.workdps(dps + 10):
+            return law / linear - 1
+    return truth
+
+
+@functools.lru_cache(maxsize=4)
+def law_env(name: str, pend: str, dps: int) -> dict:
+    """K, z, z', n² of the modes, Q = K(z − z') (45) and G4 = ∫(Kv + w)⁴/M³ ds (79) on the shot blade, i_4 by
+    quadrature of its definition (2/π)∫cos⁴φ dφ."""
+    env = general_truth.blade_env(name, pend, dps)
+    with mp.workdps(dps + 10):
+        G4 = profiles.shot_blade(name, dps).G(4, env["K"])
+        i4 = 2 / mp.pi * mp.quad(lambda x: mp.cos(x) ** 4, [0, mp.pi / 2])
+        return dict(env, Q=env["K"] * (env["z"] - env["z'"]), G_4=G4, i_4=i4)
+
+
+def law_order() -> checks.Order:
+    """(141) at q = 2 against the exact blade with the law M(c + a2c³): g_3(a2) = a2G4 (140), residual O(θ0⁴) (the
+    law's interaction with the isochronism; a wrong θ0^q, i_{q+2} or g_{q+1} would leave O(θ0²))."""
+    name, pend = general_truth.CASE
+
+    def at(expr, theta0):
+        env = law_env(name, pend, checks.DPS)
+        q = sp.Symbol("q", integer=True, nonnegative=True)
+        a_2 = a_q(2, sp.Symbol("s", real=True))
+        expr = expr.subs(q, 2)
+        a2 = mp.mpf(LAW_A2.p) / LAW_A2.q
+        values = dict(env, theta_0=mp.mpf(theta0))
+        values.update({i_fn(4): env["i_4"], g_fn(3, a_2): a2 * env["G_4"], a_2: a2})
+        return verify.value_at(expr, values)
+    return checks.Order(param="θ0", values=general_truth.amplitudes, truth=law_change(name, pend), at=at,
+                        expected=4, confirm_dps=33,
+                        truth_desc=f"{LAW_TRUTH}; a2 = {LAW_A2} m², {name} blade, {pend} pendulum",
+                        params=(("blade", name), ("pendulum", pend), ("q", "2"), ("a2", str(LAW_A2))),
+                        note="q = 2, a2 constant: g_3(a2) = a2G4 (140), G4 = ∫(Kv + w)⁴/M³ ds on the shot blade, i_4 "
+                             "by quadrature; K, z, z' of the modes; the θ0 of (111)")
+
+
 # ---------------------------------------------------------------- (147), (149): the damped oscillation
 # the reduced equation θ'' + n²θ = f/(z − z') of n°28 with a dissipative friction of degrees p, q whose
 # magnitude depends on the quadrant: C_out on the way out (|θ| growing), C_in on the way back, on each side
@@ -156,11 +224,13 @@ FRICTION = {"p": 1, "q": 1, "n": "1.3", "Q": "0.8", "theta_0": "0.05",
 STRENGTHS = ("0.001", "0.1")            # the scale ε of the four coefficients
 
 
+@functools.lru_cache(maxsize=16)
 def friction_cycle(eps: str, dps: int) -> tuple:
     """(T n/(2π) − 1, θ(T) − θ0) over one period from the maximum θ0 (θ' = 0) to the next maximum, for
     θ'' = −n²θ − sign(θ')(n²/Q)C|θ|^p|θ'|^q (a force that always opposes the motion), C = ε·(b, a', b', a) in
     the quadrants (θ > 0 back, θ < 0 out, θ < 0 back, θ > 0 out); odefun on each quadrant, its end (θ = 0 or
-    θ' = 0) found by findroot on the dense solution."""
+    θ' = 0) found by findroot on the dense solution.  Cached in the process: (147) and (149) read the two
+    components of the same cycles."""
     with mp.workdps(dps + 10):
         F = {k: mp.mpf(v) if isinstance(v, str) else v for k, v in FRICTION.items()}
         e = mp.mpf(eps)
