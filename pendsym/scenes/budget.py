@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import mpmath as mp
 import sympy as sp
+from sympy.printing.pycode import MpmathPrinter
 
 from .. import registry, verify
 from ..result import Result
@@ -203,12 +204,20 @@ def _compiled(expr: sp.Expr):
     fixed = sorted((f for f in expr.atoms(sp.besselj, sp.bessely) if not f.free_symbols & bound), key=sp.srepr)
     stand = [sp.Symbol(f"bessel_value_{n}") for n in range(len(fixed))]
     syms = sorted(expr.free_symbols, key=lambda x: x.name)
-    values_of = verify.lambdify_mp(sp.Tuple(*fixed), syms)
-    main = verify.lambdify_mp(expr.xreplace(dict(zip(fixed, stand))), [*syms, *stand])
+    values_of = _lambdify_mp(sp.Tuple(*fixed), syms)
+    main = _lambdify_mp(expr.xreplace(dict(zip(fixed, stand))), [*syms, *stand])
 
     def f(*args):
         return main(*args, *values_of(*args))
     return tuple(x.name for x in syms), f
+
+
+def _lambdify_mp(expr: sp.Basic, symbols: list[sp.Symbol]):
+    """:func:`pendsym.verify.lambdify_mp` with the terms printed in the tree's order, not sorted (sorting the terms
+    of a holed blade's large forms was most of a warm scene's time; the same terms are summed)."""
+    printer = MpmathPrinter({"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True,
+                             "user_functions": {}, "order": "none"})
+    return sp.lambdify(tuple(symbols), expr, modules="mpmath", printer=printer)
 
 
 def _by_mpmath(expr: sp.Expr, subs: dict) -> sp.Float:

@@ -19,7 +19,7 @@ import sympy as sp
 from .. import cache, keys, registry
 from ..result import Result, Spec
 
-FORMAT = "1"          # bump when the meaning of an entry changes
+FORMAT = "2"          # bump when the meaning of an entry changes
 
 
 @dataclass(frozen=True)
@@ -29,7 +29,7 @@ class Entry:
     section: str                                   # the module whose ``specs()`` gives its Spec
     deps: tuple[str, ...]
     key: str                                       # the cache key of its (derived, printed) forms
-    defs: tuple[tuple[sp.Symbol, sp.Expr], ...]     # Spec.defs
+    has_defs: bool                                 # whether its Spec has definitions (stored apart: :func:`defs`)
 
 
 def index_key(pkgs: tuple[str, ...]) -> str:
@@ -37,15 +37,33 @@ def index_key(pkgs: tuple[str, ...]) -> str:
     return keys.digest(("scene index", FORMAT, keys.tree_key(pkgs)))
 
 
+def defs_key(entry: Entry) -> str:
+    """The key of a Result's definitions: they are its Spec's, which its key covers (its section's source)."""
+    return keys.digest(("scene defs", FORMAT, entry.key))
+
+
 def compute(pkgs: tuple[str, ...]) -> dict[str, Entry]:
-    """The index, from the memoirs themselves (imports and builds every section's Specs)."""
+    """The index, from the memoirs themselves (imports and builds every section's Specs); the definitions of
+    the Results that have some are stored apart, each under :func:`defs_key` (most scenes read one or two)."""
     found = registry.discover(pkgs)
     specs = registry.all_specs(found)
     order = registry.closure(list(specs), specs)
     section = {s.id: sec.module for m in found.values() for sec in m.sections for s in sec.specs}
     ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, ("pendsym", *pkgs))
-    return {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), specs[rid].defs)
-            for rid in order}
+    out = {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), bool(specs[rid].defs))
+           for rid in order}
+    for rid, entry in out.items():
+        if entry.has_defs and cache.load(defs_key(entry)) is cache.MISSING:
+            cache.store(defs_key(entry), specs[rid].defs)
+    return out
+
+
+def defs(rid: str, index: Mapping[str, Entry]) -> tuple:
+    """The definitions of Result rid (Spec.defs), from the cache, or from its section (imported) and stored."""
+    entry = index[rid]
+    if not entry.has_defs:
+        return ()
+    return cache.memo(defs_key(entry), lambda: _specs([entry.section])[rid].defs)
 
 
 def entries(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
@@ -116,6 +134,6 @@ def derived_values(ids: Iterable[str], index: Mapping[str, Entry]) -> tuple[dict
         forms.update({rid: built[rid].derived for rid in missing})
     out = {}
     for rid in ids:
-        defs = index[rid].defs
-        out[rid] = forms[rid].subs(dict(defs), simultaneous=True) if defs else forms[rid]
+        given = defs(rid, index)
+        out[rid] = forms[rid].subs(dict(given), simultaneous=True) if given else forms[rid]
     return out, size
