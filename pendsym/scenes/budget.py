@@ -254,11 +254,12 @@ def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> 
     """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p (symbolic derivatives, 30 digits)."""
     if expr.has(*SLOW_FOR_EVALF):
         return _log_slope_by_mpmath(expr, values, exponents)
-    out = 0.0
+    out, base = 0.0, None
     for sym in expr.free_symbols:
         p = exponents.get(sym.name, 0)
         if p:
-            out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / _value(expr, values, rid)
+            base = _value(expr, values, rid) if base is None else base      # the form's value, evaluated once
+            out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / base
     return out
 
 
