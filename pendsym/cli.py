@@ -187,7 +187,7 @@ def cmd_derive(args) -> int:
     for line in outcome.summary:
         print(line)
     from .scenes import index as scene_index
-    scene_index.entries()     # the tree's index of Results, which `pendsym scene` reads without importing a memoir
+    scene_index.remember()    # the tree's index of Results, which `pendsym scene` reads without importing a memoir
     if not outcome.nothing_changed:
         print(f"wrote {len(outcome.written)} files under {args.out}/")
     return 1 if outcome.failed else 0

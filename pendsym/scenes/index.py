@@ -43,19 +43,29 @@ def defs_key(entry: Entry) -> str:
 
 
 def compute(pkgs: tuple[str, ...]) -> dict[str, Entry]:
-    """The index, from the memoirs themselves (imports and builds every section's Specs); the definitions of
-    the Results that have some are stored apart, each under :func:`defs_key` (most scenes read one or two)."""
+    """The index, from the memoirs themselves (imports and builds every section's Specs).  The definitions of the
+    Results that have some are stored apart, each under :func:`defs_key` (a scene reads one or two), by
+    :func:`remember` or by :func:`defs` when first needed."""
     found = registry.discover(pkgs)
     specs = registry.all_specs(found)
     order = registry.closure(list(specs), specs)
     section = {s.id: sec.module for m in found.values() for sec in m.sections for s in sec.specs}
     ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, ("pendsym", *pkgs))
-    out = {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), bool(specs[rid].defs))
-           for rid in order}
-    for rid, entry in out.items():
-        if entry.has_defs and cache.load(defs_key(entry)) is cache.MISSING:
-            cache.store(defs_key(entry), specs[rid].defs)
-    return out
+    return {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), bool(specs[rid].defs))
+            for rid in order}
+
+
+def remember(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
+    """The index and the definitions of every Result that has some, stored (``pendsym derive`` calls it, with the
+    memoirs already imported, so that the scenes that follow import none)."""
+    pkgs = registry.packages() if pkgs is None else pkgs
+    found = entries(pkgs)
+    missing = [rid for rid, entry in found.items() if entry.has_defs and cache.load(defs_key(entry)) is cache.MISSING]
+    if missing:
+        specs = registry.all_specs(registry.discover(pkgs))
+        for rid in missing:
+            cache.store(defs_key(found[rid]), specs[rid].defs)
+    return found
 
 
 def defs(rid: str, index: Mapping[str, Entry]) -> tuple:
