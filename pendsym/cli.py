@@ -186,6 +186,8 @@ def cmd_derive(args) -> int:
         done()
     for line in outcome.summary:
         print(line)
+    from .scenes import index as scene_index
+    scene_index.remember()    # the tree's index of Results, which `pendsym scene` reads without importing a memoir
     if not outcome.nothing_changed:
         print(f"wrote {len(outcome.written)} files under {args.out}/")
     return 1 if outcome.failed else 0

@@ -6,31 +6,23 @@ knife edge (pressures.py), the static support y1 = KQ (static_support.py) and th
 leading substitutions neglect (neglected_terms.py), the support as an elastic bar
 (elastic_bar.py), δ in practice and the worked example (practical.py).  Shared helpers:
 common.py (ids, locators, readings, precision) and symbols.py; the truth models: truth.py.
+
+
+The registration (``MEMOIR``) is in :mod:`.registration`, imported when first asked for.
 """
-from pendsym.memoir import Memoir, Section
+import importlib
+import importlib.util
 
-from . import common, elastic_bar, equation, general, neglected_terms, practical, pressures, static_support
 
-MEMOIR = Memoir(
-    key=common.MEMOIR,
-    title="Ch. Cellérier, Mouvement simultané d'un pendule et de ses supports",
-    sections=(
-        Section.of(equation, "The equation of motion of a pendulum on a moving support"),
-        Section.of(general, "Perturbation at finite amplitude: δ and α1 (the earlier memoir, rebuilt)"),
-        Section.of(pressures, "The pressures on the knife edge"),
-        Section.of(static_support, "A support of static compliance K"),
-        Section.of(neglected_terms, "The neglected terms: δ at finite amplitude and the change of amplitude"),
-        Section.of(elastic_bar, "The support as an elastic bar"),
-        Section.of(practical, "δ in practice: the test force and the worked example"),
-    ),
-    # Checks that integrate the same trajectories (lru-cached in derivations.cellerier.truth): each
-    # group runs in one worker so that the second reuses the first's integrations.
-    affinity=(
-        ("cellerier.delta_general", "cellerier.alpha1_general", "cellerier.delta_support"),
-        ("cellerier.delta_static_finite", "cellerier.alpha1_static"),
-        ("cellerier.delta_static", "cellerier.y1dd", "cellerier.delta_static_integral"),
-        ("cellerier.example_delta", "cellerier.delta_practical"),
-        ("cellerier.equation", "cellerier.equation_l"),
-    ),
-    cost=3.0,
-)
+def __getattr__(name: str):
+    """A submodule by its name; any other name (``MEMOIR``…) from :mod:`.registration`, imported on first use
+    (PEP 562): importing one section, or the memoir's scene effects, does not import and build every section."""
+    if name.startswith("__"):
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    if importlib.util.find_spec(f"{__name__}.{name}") is not None:
+        return importlib.import_module(f"{__name__}.{name}")
+    registration = importlib.import_module(f"{__name__}.registration")
+    try:
+        return getattr(registration, name)
+    except AttributeError:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None

@@ -20,11 +20,16 @@ x1dd_of_phi, y1dd_of_phi = sp.Function("x1dd"), sp.Function("y1dd")   # x1'', y1
 X_TESTS = (sp.Lambda(phi, sp.cos(phi) / 3 + phi / 7), sp.Lambda(phi, sp.sin(3 * phi) - sp.Rational(1, 5)))
 Y_TESTS = (sp.Lambda(phi, sp.cos(2 * phi) + phi**2 / 9), sp.Lambda(phi, sp.exp(-phi) / 2))
 XY_INSTANCES = tuple(((x1dd_of_phi, x), (y1dd_of_phi, y)) for x, y in zip(X_TESTS, Y_TESTS))
-THETA_PHI = ((theta, finite_amplitude.free_angle()),)
 KS = Geometric("5e-3", "4e-2")          # the compliance K of the checks
 
 
 # ----------------------------------------------------------------- derivation
+def theta_of_phi() -> tuple[tuple[sp.Symbol, sp.Expr], ...]:
+    """θ as a function of φ and α (cos θ = cos α cos²φ + sin²φ, p. 2): the definition under which δ's printed
+    and derived forms are compared.  Derived when the Specs are built, not when the module is imported."""
+    return ((theta, finite_amplitude.free_angle()),)
+
+
 def u_of_mu(mu: sp.Expr) -> sp.Expr:
     """u = μ'/(2 m g sin ½α), as the text defines it."""
     return mu / (2 * m * g * sp.sin(alpha / 2))
@@ -174,7 +179,7 @@ def specs() -> tuple[Spec, ...]:
         Spec(rid("delta_support"), "δ for the motion of the knife edge",
              src("substitution", "δ = 1/(2πg) ∫_0^π [sin θ d²x1/dt² − cos θ d²y1/dt²] cos φ/sin ½α dφ"), r"\delta",
              delta_support_derived, deps=(rid("delta_general"), rid("mu_prime")), printed=delta_support_printed,
-             defs=THETA_PHI, instances=XY_INSTANCES, check=checks.Chain((rid("delta_general"), rid("mu_prime"))),
+             defs=theta_of_phi(), instances=XY_INSTANCES, check=checks.Chain((rid("delta_general"), rid("mu_prime"))),
              note="x1'', y1'' along the swing are arbitrary functions of φ (compared on test functions). "
                   "Verified through its two ingredients; no integration with a prescribed support motion yet."),
         Spec(rid("Q_static"), "Q on the free swing",

@@ -13,8 +13,6 @@ import mpmath as mp
 
 from pendsym.scenes.effects import Effect, Instrument
 
-from . import truth
-
 
 def _per_swing(value: float, inst: Instrument) -> float:
     """ΔT/T with T = π/k."""
@@ -30,6 +28,7 @@ def _circular_exact(inst: Instrument) -> tuple[float, float, str]:
 
 def _drift_exact(inst: Instrument) -> tuple[float, float, str]:
     """T/T_lin − 1 for l = l0(1 + at), θ'' + (2/l)l'θ' + (g/l)θ = 0 integrated (n°27–28's governing model)."""
+    from . import truth        # the integration's module, imported only by a scene that needs it
     a = inst.drift_a
     with mp.workdps(20):
         sw = truth.swing("growing", repr(inst.alpha), repr(inst.k), 20, a=repr(a))

@@ -6,7 +6,9 @@ error budget, built from only the Results it needs.  See docs/scenes.md.
     report(path, as_json) → the text (or JSON) the CLI prints
 
 Memoirs contribute effects through ``derivations/<memoir>/scene_effects.py``
-(:mod:`pendsym.scenes.effects`).
+(:mod:`pendsym.scenes.effects`).  A scene reads its Results' forms from the cache through the tree's index
+(:mod:`pendsym.scenes.index`, stored by ``pendsym derive``) and imports no memoir section when the cache holds
+them; from a cold cache it imports every memoir once (to index them) and derives only the closure it needs.
 """
 from __future__ import annotations
 

@@ -19,11 +19,12 @@ from dataclasses import dataclass
 
 import mpmath as mp
 import sympy as sp
+from sympy.printing.pycode import MpmathPrinter
 
-from .. import cache, keys, registry, verify
+from .. import registry, verify
 from ..result import Result
 from ..scene import SceneError
-from . import schema
+from . import index, schema
 from .effects import Coefficient, Effect, Instrument, coefficients, effects, pending
 
 SECONDS_PER_DAY = 86400.0
@@ -156,32 +157,18 @@ def _unaccounted_pairs(kept: list[Effect], rels: dict[str, float]) -> list[tuple
     return [(x, y) for n, x in enumerate(names) for y in names[n + 1:] if frozenset((x, y)) not in given]
 
 
-@functools.lru_cache(maxsize=1)
-def results_total() -> int:
-    """How many Results the memoirs hold, remembered in the cache under the tree's key (counting them builds every
-    memoir's specs, ~1 s of derivation steps in spec tables, for a number that changes only with the sources)."""
-    key = keys.digest(("results total", keys.tree_key(registry.packages())))
-    return cache.memo(key, lambda: len(registry.all_specs()))
-
-
 def build(ids: list[str]) -> dict[str, Result]:
-    """The closure of ids, each Result's forms read from the shared cache under the key a full
-    derive uses (``built``, the Result's key), or derived here and stored."""
-    memoirs = sorted({registry.memoir_of(i) for i in ids})
-    specs = registry.all_specs(memoirs)
-    order = registry.closure(ids, specs)
-    section = {s.id: sec.module for m in memoirs for sec in registry.memoir(m).sections for s in sec.specs}
-    ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, ("pendsym", *registry.packages()))
-    built: dict[str, Result] = {}
-    for rid in order:
-        spec = specs[rid]
+    """The Results of the closure of ids (:func:`pendsym.scenes.index.results`)."""
+    return index.results(ids, index.entries())
 
-        def forms(spec=spec):
-            r = registry.build_one(spec, built)
-            return r.derived, r.printed
-        derived, printed = cache.memo(keys.digest(("built", "", ks[rid])), forms)
-        built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={d: built[d] for d in spec.deps})
-    return built
+
+def derived_forms(ids: list[str]) -> tuple[dict[str, sp.Basic], int, int]:
+    """({id: its derived form under its definitions}, the size of the ids' closure, how many Results the memoirs
+    hold), from the index of the Results (:mod:`pendsym.scenes.index`): the forms are read from the shared cache
+    under the keys a full derive uses, or derived here (only the sections of their closure imported) and stored."""
+    entries = index.entries()
+    values, closure_size = index.derived_values(ids, entries)
+    return values, closure_size, len(entries)
 
 
 def _value(expr: sp.Expr, values: dict[str, float], rid: str) -> float:
@@ -217,12 +204,20 @@ def _compiled(expr: sp.Expr):
     fixed = sorted((f for f in expr.atoms(sp.besselj, sp.bessely) if not f.free_symbols & bound), key=sp.srepr)
     stand = [sp.Symbol(f"bessel_value_{n}") for n in range(len(fixed))]
     syms = sorted(expr.free_symbols, key=lambda x: x.name)
-    values_of = verify.lambdify_mp(sp.Tuple(*fixed), syms)
-    main = verify.lambdify_mp(expr.xreplace(dict(zip(fixed, stand))), [*syms, *stand])
+    values_of = _lambdify_mp(sp.Tuple(*fixed), syms)
+    main = _lambdify_mp(expr.xreplace(dict(zip(fixed, stand))), [*syms, *stand])
 
     def f(*args):
         return main(*args, *values_of(*args))
     return tuple(x.name for x in syms), f
+
+
+def _lambdify_mp(expr: sp.Basic, symbols: list[sp.Symbol]):
+    """:func:`pendsym.verify.lambdify_mp` with the terms printed in the tree's order, not sorted (sorting the terms
+    of a holed blade's large forms was most of a warm scene's time; the same terms are summed)."""
+    printer = MpmathPrinter({"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True,
+                             "user_functions": {}, "order": "none"})
+    return sp.lambdify(tuple(symbols), expr, modules="mpmath", printer=printer)
 
 
 def _by_mpmath(expr: sp.Expr, subs: dict) -> sp.Float:
@@ -244,13 +239,13 @@ def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
     return dropped
 
 
-def _values(eff: Effect | Coefficient, inst: Instrument, built: dict[str, Result]) -> dict[str, float]:
+def _values(eff: Effect | Coefficient, inst: Instrument, built: dict[str, sp.Basic]) -> dict[str, float]:
     """The Result's symbols at this scene: the effect's map, then what the Results it uses give (in order)."""
     values = dict(eff.symbols(inst))
     used: dict[str, float] = {}
     for rid in eff.uses:
         values.update(eff.given(inst, used) if eff.given else {})
-        used[rid] = _value(built[rid].derived_value, values, rid)
+        used[rid] = _value(built[rid], values, rid)
     values.update(eff.given(inst, used) if eff.given else {})
     return values
 
@@ -259,11 +254,12 @@ def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> 
     """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p (symbolic derivatives, 30 digits)."""
     if expr.has(*SLOW_FOR_EVALF):
         return _log_slope_by_mpmath(expr, values, exponents)
-    out = 0.0
+    out, base = 0.0, None
     for sym in expr.free_symbols:
         p = exponents.get(sym.name, 0)
         if p:
-            out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / _value(expr, values, rid)
+            base = _value(expr, values, rid) if base is None else base      # the form's value, evaluated once
+            out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / base
     return out
 
 
@@ -305,10 +301,9 @@ def solve(sc: schema.Scene) -> Budget:
     try:
         ids = [e.result for e in kept] + [u for e in kept for u in e.uses] + [c.result for c in coefs] + \
             [u for c in coefs for u in c.uses]
-        built = build(ids) if ids else {}
+        built, closure_size, total = derived_forms(ids) if ids else ({}, 0, len(index.entries()))
     except registry.UnknownResult as exc:
         raise SceneError(f"a memoir's scene effect names {exc}") from None
-    total = results_total()
     share = tol / (4 * max(1, len(kept)))
     rels: dict[str, float] = {}
     rows: list[Row] = []
@@ -320,7 +315,7 @@ def solve(sc: schema.Scene) -> Budget:
                             "estimated from the printed statement, below the tolerance"))
             continue
         values = _values(eff, inst, built)
-        value = _value(built[eff.result].derived_value, values, eff.result)
+        value = _value(built[eff.result], values, eff.result)
         if eff.base:
             T0 = float(eff.relative(value, inst))
             if not (math.isfinite(T0) and T0 > 0):
@@ -328,7 +323,7 @@ def solve(sc: schema.Scene) -> Budget:
             base_err = float(eff.error(0.0, inst))
             base = f"{eff.title}, T0 from {eff.result}"
             if eff.g_exponents and eff.sensitivity:
-                slope = _log_slope(built[eff.result].derived_value, values, eff.g_exponents, eff.result)
+                slope = _log_slope(built[eff.result], values, eff.g_exponents, eff.result)
                 sens, sens_err = float(eff.sensitivity(slope, inst)), 0.0
             rows.append(Row(eff.key, eff.title, eff.source, eff.result, est, math.inf, base_err, "kept",
                             f"{eff.model} ({eff.result}): the base, T0 = {T0:.12g} s"))
@@ -374,11 +369,11 @@ def solve(sc: schema.Scene) -> Budget:
             else:
                 sens_err += 2 * abs(base_sens) * abs(rels[eff.key])
     temp, temp_err, temp_model = _coefficient(coefs, "temperature", inst, built, rels)
-    return Budget(sc, inst, T0 * factor, error, tuple(rows), interaction, len(built), total, T0, base, sens, sens_err,
+    return Budget(sc, inst, T0 * factor, error, tuple(rows), interaction, closure_size, total, T0, base, sens, sens_err,
                   temp, temp_err, temp_model)
 
 
-def _coefficient(coefs: list[Coefficient], quantity: str, inst: Instrument, built: dict[str, Result],
+def _coefficient(coefs: list[Coefficient], quantity: str, inst: Instrument, built: dict[str, sp.Basic],
                  rels: dict[str, float]) -> tuple[float | None, float | None, str]:
     """The coefficient ``quantity`` of the linear period from the one memoir Coefficient that applies, its error, and
     what it is.  The kept effects' own dependence on it (but those the coefficient ``covers``) is not given by a Result:
@@ -391,7 +386,7 @@ def _coefficient(coefs: list[Coefficient], quantity: str, inst: Instrument, buil
         raise SceneError(f"two memoir coefficients give '{quantity}' for this scene: {[c.key for c in mine]}")
     c = mine[0]
     values = _values(c, inst, built)
-    value = _value(built[c.result].derived_value, values, c.result)
+    value = _value(built[c.result], values, c.result)
     coef = float(c.coefficient(value, inst, values))
     err = float(c.error(coef, inst)) + 2 * abs(coef) * sum(abs(r) for k, r in rels.items() if k not in c.covers)
     return coef, err, f"{c.title}: {c.model} ({c.result}; {c.source})"

@@ -1,8 +1,11 @@
 """Haag 1935, chapter I, n°10–15, eqs. (42)–(63): the Results, joining derivation, print and truth."""
 from __future__ import annotations
 
+import sympy as sp
+
 from pendsym import checks
 from pendsym.result import Spec
+from ..ch1_motion import printed as ch1_printed
 from ..common import READ_VW, rid, src
 from ..symbols import G, G_2, K, M_lambda, P_lambda, Q, a, a1, beta1, v, vl, w, wl, z
 from . import derivation, printed, truth
@@ -11,9 +14,21 @@ from .printed import INSTANCES, READ_43, READ_44, READ_51, READ_60
 THROUGH_54 = checks.Chain((rid(54, "x"),))
 
 
+def z_by_36() -> sp.Expr:
+    """z by (36) as printed, K = (a + wλ)/(a + z − vλ), solved for z: z = (a + wλ)/K − a + vλ.
+
+    The definition under which the printed forms (they hold z) are compared with the derived ones (which
+    eliminate z by the derived (36), :func:`derivation.z_of_K`).  Solved from the printed relation, a solve of
+    one linear equation, so that building the Specs derives nothing (the derived (36) takes ~1.3 s of CPU);
+    the two are the same expression (tests/test_haag1935_ch1_variations_table.py), and the printed (36)
+    is checked against the derived one by haag1935.eq036.K.
+    """
+    return sp.solve(sp.Eq(K, ch1_printed.eq36()), z)[0]
+
+
 def haag_definitions():
     """Haag's definitions used by the printed forms: Q (45), a1 = −wλ (41), z by (36), Pλ (59)."""
-    return ((Q, a + wl + K**2 * beta1), (a1, -wl), (z, derivation.z_of_K()), (P_lambda, (K * vl + wl) ** 2 / M_lambda))
+    return ((Q, a + wl + K**2 * beta1), (a1, -wl), (z, z_by_36()), (P_lambda, (K * vl + wl) ** 2 / M_lambda))
 
 
 def specs() -> tuple[Spec, ...]:
