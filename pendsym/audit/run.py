@@ -39,6 +39,7 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 import mpmath as mp
+import numpy
 import sympy as sp
 
 from .. import pipeline, schedule, stages
@@ -46,6 +47,7 @@ from ..emit import kernels as kn
 from ..emit.kernels.limits import LIMIT_FAR, far_dps, far_values, ref_dps
 from ..emit.kernels.measure import reference
 from ..result import KernelArg
+from . import arrays as ar
 from . import points as pt
 
 LIMIT_AT = 1e-80         # the reference at 0 of an argument accepted down to 0: the form here
@@ -299,8 +301,34 @@ def audit_one(job: Job, points: int = POINTS) -> dict:
               "worst_ulp": round(max(r[3] for r in rows), 3), "over_bound": fails_c},
         "domain_accepted": [list(d) for d in job.domain],
         "outside": outside(job, ctypes.get_errno),
+        "numpy": numpy_figures(job, judge, rows),
         "cpu_s": round(time.process_time() - start, 1),
     }
+
+
+def numpy_figures(job: Job, judge: Judge, rows: Sequence[tuple]) -> dict:
+    """The array path (the Python kernel called on numpy arrays) on every point of the audit at once,
+    against the scalar path: the points where the two differ and by how many ulp at most; its
+    scaled error where they differ (the scalar one plus the difference, an upper bound, unless that
+    could exceed the bound: then against the reference)."""
+    pts = numpy.array([r[1] for r in rows], dtype=float)
+    scalar = numpy.array([Judge._call(job.py, tuple(p)) for p in pts])
+    array = job.py(*[numpy.ascontiguousarray(c) for c in pts.T])
+    same = (array == scalar) | (numpy.isnan(array) & numpy.isnan(scalar))
+    worst_diff, worst = 0.0, 0.0
+    for i in numpy.flatnonzero(~same):
+        r, a, s = rows[i], float(array[i]), float(scalar[i])
+        diff = abs(a - s) / math.ulp(s) if math.isfinite(a) and math.isfinite(s) and s != 0 else math.inf
+        worst_diff = max(worst_diff, diff)
+        m = max(1.0, r[4]) if not math.isnan(r[4]) else 1.0
+        scaled = (r[2] + diff) / m
+        if scaled > kn.BOUND:                       # measured: the array value against the reference
+            k = judge.kappa(r[1]) if math.isnan(r[4]) else r[4]
+            scaled = judge.ulp(a, judge.truth(r[1])) / max(1.0, k if not math.isnan(k) else 1.0)
+        worst = max(worst, scaled)
+    py_worst = max((r[5] for r in rows), default=0.0)
+    return {"points": len(rows), "differ": int((~same).sum()), "max_diff_ulp": round(worst_diff, 3),
+            "worst_scaled": round(max(worst, py_worst), 3)}
 
 
 # ----------------------------------------------------------------- the emitted code, loaded as a user would
@@ -366,6 +394,12 @@ def c_ns(lib: ctypes.CDLL, job: Job) -> tuple[float, float]:
     return round(min(runs), 1), round(statistics.median(runs), 1)
 
 
+def numpy_ns(job: Job) -> tuple[float, float]:
+    """(min, median) ns per element of the Python kernel on numpy arrays of ar.ARRAY_POINTS random
+    points of its declared domain (log-uniform for a geometric argument), over ar.REPEATS calls."""
+    return ar.ns_per_element(job.py, [(a.name, a.lo, a.hi, a.log) for a in job.args], job.name)
+
+
 def jobs(generated: Path, work: Path, only: Sequence[str] = ()) -> tuple[dict[str, Job], dict[str, ctypes.CDLL]]:
     """The kernels listed in results.json, with their emitted Python and C loaded, and the
     derived forms of their Results (from the cache of make derive)."""
@@ -403,14 +437,22 @@ def table(rows: Sequence[dict]) -> str:
         ns = r.get("c_ns")
         lines.append(f"| `{r['kernel']}` | {r['points']} | {r['python']['worst_scaled']:.3g}, {r['c']['worst_scaled']:.3g} "
                      f"| {_fmt_point(r['args'], r['worst_at'])} | "
-                     f"{f'{ns[0]:.0f}, {ns[1]:.0f}' if ns else '—'} | {r.get('numpy_ns') or '—'} |")
+                     f"{f'{ns[0]:.0f}, {ns[1]:.0f}' if ns else '—'} | {_numpy_cell(r)} |")
     return "\n".join(lines) + "\n"
+
+
+def _numpy_cell(r: dict) -> str:
+    """numpy ns/element (min, median), and where the array path departs from the scalar path bitwise
+    (numpy's SIMD exp, tanh … against libm's) the points and the largest difference in ulp."""
+    ns, nf = r.get("numpy_ns"), r.get("numpy") or {}
+    cell = f"{ns[0]:.0f}, {ns[1]:.0f}" if ns else "—"
+    return cell + (f" ({nf['differ']} pts ≤ {nf['max_diff_ulp']:.3g} ulp from scalar)" if nf.get("differ") else "")
 
 
 def over(rows: Sequence[dict]) -> list[dict]:
     """The kernels over the bound in either language, or departing from the behaviour outside the domain."""
     return [r for r in rows if r["python"]["worst_scaled"] > kn.BOUND or r["c"]["worst_scaled"] > kn.BOUND
-            or r.get("outside")]
+            or r.get("outside") or (r.get("numpy") or {}).get("worst_scaled", 0.0) > kn.BOUND]
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -433,6 +475,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not ns.no_timing:
             for r in rows:
                 r["c_ns"] = list(c_ns(libs[r["memoir"]], todo[r["kernel"]]))
+                r["numpy_ns"] = list(numpy_ns(todo[r["kernel"]]))
     out.mkdir(parents=True, exist_ok=True)
     (out / "audit.json").write_text(json.dumps({"bound": kn.BOUND, "kernels": rows}, indent=1) + "\n")
     (out / "audit.md").write_text(table(rows))
