@@ -43,7 +43,8 @@ from .io import write_atomic
 
 TIME_POINTS = 4096        # random points of a C timing run
 PY_POINTS = 1000          # random points of a Python timing run
-ARRAY_POINTS = 10**6      # elements of a numpy timing run
+ARRAY_POINTS = 10**6      # elements of a numpy timing run (fewer for a heavy kernel: ARRAY_BUDGET)
+ARRAY_BUDGET = 0.25       # seconds a numpy timing call may take
 MP_POINTS = 40            # random points of an mpmath timing run
 ERROR_POINTS = 100        # random points of the error columns
 REPEATS = 5
@@ -161,8 +162,6 @@ def bench_kernel(name: str, result, mod, lib, has_naive: bool, work_seed: str = 
             return float(f50(*[mp.mpf(v) for v in p]))
     c_fn = getattr(lib, name)
     c_fn.restype, c_fn.argtypes = ctypes.c_double, [ctypes.c_double] * len(args)
-    cols = [numpy.ascontiguousarray(c) for c in ar.random_points([(a.name, a.lo, a.hi, a.log) for a in args],
-                                                                 ARRAY_POINTS, seed).T]
     methods = {}
     if has_naive:
         naive = getattr(lib, f"{name}_naive")
@@ -170,21 +169,13 @@ def bench_kernel(name: str, result, mod, lib, has_naive: bool, work_seed: str = 
         methods["naive printed form, C double"] = (c_time(lib, f"{name}_naive", pts), max_ulp(values(naive, err_pts), truths))
     methods["stable C kernel"] = (c_time(lib, name, pts), max_ulp(values(c_fn, err_pts), truths))
     methods["Python kernel"] = (call_time(py, pts[:PY_POINTS]), max_ulp(values(py, err_pts), truths))
-    methods["numpy kernel, per element"] = (_array_time(py, cols), max_ulp([float(v) for v in py(*[numpy.array(c) for c in zip(*err_pts)])], truths))
+    *array_ns, elements = ar.ns_per_element(py, [(a.name, a.lo, a.hi, a.log) for a in args], seed,
+                                            n=ARRAY_POINTS, repeats=REPEATS, budget=ARRAY_BUDGET)
+    methods[f"numpy kernel, per element of {elements:.0e}"] = (tuple(array_ns), max_ulp([float(v) for v in py(*[numpy.array(c) for c in zip(*err_pts)])], truths))
     methods["mpmath, 15 digits"] = (call_time(mp15, pts[:MP_POINTS]), max_ulp(values(mp15, err_pts), truths))
     return {"kernel": name, "result": result.spec.id, "args": [a.name for a in args],
             "domain": [[a.lo, a.hi] for a in args], "scipy": None,
             "methods": {k: {"ns": list(t), "max_ulp": e} for k, (t, e) in methods.items()}}
-
-
-def _array_time(fn: Callable, cols) -> tuple[float, float]:
-    fn(*cols)
-    runs = []
-    for _ in range(REPEATS):
-        t0 = time.perf_counter()
-        fn(*cols)
-        runs.append((time.perf_counter() - t0) * 1e9 / len(cols[0]))
-    return round(min(runs), 1), round(statistics.median(runs), 1)
 
 
 def run(generated: Path, memoirs: Sequence[str] = ()) -> dict[str, list[dict]]:

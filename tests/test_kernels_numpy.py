@@ -110,15 +110,17 @@ def test_arguments_broadcast_and_keep_their_shape(modules):
     for name in ("eq182_I", "eq170_F"):
         fn = getattr(mod, name)
         dom = ar.domain(code, name)
+        i_u = [x for x, _, _ in dom].index("u")
         mid = [math.sqrt(lo * hi) if lo > 0 and hi < math.inf else (lo + min(hi, 10.0)) / 2 for _, lo, hi in dom]
-        u = numpy.linspace(dom[0][1] if dom[0][1] > 0 else 1e-3, 20.0, 6).reshape(2, 3)
-        args = [u if i == 0 else m for i, m in enumerate(mid)]
-        got = fn(*args)
+        u = numpy.geomspace(1e-3, 20.0, 6).reshape(2, 3)          # across the switches of the u pieces
+        got = fn(*[u if i == i_u else m for i, m in enumerate(mid)])
         assert got.shape == (2, 3)
-        want = [[fn(*[float(u[r, c]) if i == 0 else m for i, m in enumerate(mid)]) for c in range(3)] for r in range(2)]
+        want = [[fn(*[float(u[r, c]) if i == i_u else m for i, m in enumerate(mid)]) for c in range(3)] for r in range(2)]
         assert numpy.allclose(got, want, rtol=1e-14, atol=0)
         assert fn(*[numpy.float64(v) for v in mid]) == fn(*mid)        # a numpy scalar takes the scalar path
         assert fn(*[numpy.array(v) for v in mid]).shape == ()           # a 0-d array: a 0-d result
+        column = numpy.array(mid)[:, None] * numpy.ones((1, 4))       # every argument an array, broadcast (4,) × scalar
+        assert fn(*[c if i == i_u else float(m) for i, (c, m) in enumerate(zip(column, mid))]).shape == (4,)
 
 
 def _cpu_dispatch() -> str:

@@ -24,6 +24,7 @@ import numpy
 GUARD = re.compile(r"if not (\S+) <= (\w+) <= (\S+):")
 SWITCH = re.compile(r"\((\w+) [<>]=? (-?[0-9][0-9.e+-]*)\)")
 ARRAY_POINTS = 10**6
+PROBE = 10**4          # elements of the call that sizes a timed array to a budget
 REPEATS = 5
 
 
@@ -109,9 +110,18 @@ def compare(fn: Callable, pts: numpy.ndarray) -> dict:
     return {"points": len(pts), "differ": int((~same).sum()), "max_ulp": worst, "at": at}
 
 
-def ns_per_element(fn: Callable, dom: Sequence[tuple], seed: str,
-                   n: int = ARRAY_POINTS, repeats: int = REPEATS) -> tuple[float, float]:
-    """(min, median) ns per element of the array path over `repeats` calls on n random points."""
+def ns_per_element(fn: Callable, dom: Sequence[tuple], seed: str, n: int = ARRAY_POINTS,
+                   repeats: int = REPEATS, budget: float | None = None) -> tuple[float, float, int]:
+    """(min, median, elements) ns per element of the array path over `repeats` calls on random
+    points: n of them, or with a `budget` (seconds a call) as many as fit in it, at most n and at
+    least PROBE (a heavy kernel is timed on fewer elements; the figure per element grows with the
+    array: at 10**6 the temporaries outgrow the caches)."""
+    if budget is not None:
+        probe = [numpy.ascontiguousarray(c) for c in random_points(dom, PROBE, seed + ":probe").T]
+        fn(*probe)
+        t0 = time.perf_counter()
+        fn(*probe)
+        n = int(min(n, max(PROBE, budget * PROBE / max(time.perf_counter() - t0, 1e-9))))
     cols = [numpy.ascontiguousarray(c) for c in random_points(dom, n, seed + ":numpy").T]
     fn(*cols)
     runs = []
@@ -119,4 +129,4 @@ def ns_per_element(fn: Callable, dom: Sequence[tuple], seed: str,
         t0 = time.perf_counter()
         fn(*cols)
         runs.append((time.perf_counter() - t0) * 1e9 / n)
-    return round(min(runs), 1), round(statistics.median(runs), 1)
+    return round(min(runs), 1), round(statistics.median(runs), 1), n
