@@ -1,25 +1,30 @@
 """Arrays: the Python kernels on numpy arrays, printed from the same statements as the scalar path.
 
-A kernel's Python function keeps its scalar path (math only, as measured) and gains one
-dispatch: an argument that is a ``numpy.ndarray`` sends the call to ``_<name>_array``, which
-runs the statements of :func:`.plan.body` elementwise, printed by SymPy's numpy printer
-(:class:`KernelNumPy`):
+A kernel's Python function keeps its scalar path (math only, as measured, byte for byte) and
+gains one dispatch: an argument that is a ``numpy.ndarray`` sends the call to ``_<name>_array``,
+which runs the statements of :func:`.plan.body` elementwise, printed by SymPy's numpy printer
+(:class:`KernelNumPy`), with no Python loop over the elements:
 
 - the arguments are broadcast together as float arrays; the guard of each argument
   (:func:`.printing.guard`) becomes one test over the array, which raises the scalar path's
-  ValueError for the first element outside the domain;
+  ValueError (the same message) for the first element outside the domain;
 - an if-chain (:class:`.plan.If`) becomes masks: each branch runs on its own elements only
   (the arrays it reads are indexed by its mask, its value written through it), so no piece
-  is evaluated where it is invalid and none warns;
+  is evaluated where it is invalid and none warns; so does every choice inside an expression
+  (a Piecewise or ITE that SymPy folded into a condition, an ``and``/``or``, which Python
+  stops evaluating at the first operand that decides, a :class:`.plan.Select`), in the order
+  the scalar path evaluates it;
 - a power is ``numpy.float_power`` (libm's pow, as Python's ``**`` on floats; numpy's ``**``
-  squares and takes reciprocals in its own way), a :class:`.plan.Select` is ``numpy.where``
-  (both of its forms are finite over the domain), a shared part is called as ``_<part>_array``.
+  squares and takes reciprocals in its own way), each distinct one computed once a statement
+  (the scalar path's conditions repeat u**2 dozens of times); a shared part is called as
+  ``_<part>_array``.
 
-The operations are those of the scalar path in the same order; numpy's own exp, expm1, log,
-tan, sinh, cosh and tanh (its SIMD loops, on a CPU that has them) may round differently
-from libm's by an ulp, so the two paths agree to an ulp or so of an intermediate, not always
-bitwise (``NPY_DISABLE_CPU_FEATURES`` set to the CPU's dispatched features makes numpy call
-libm, and then they agree bitwise: tests/test_kernels_numpy.py).
+The operations are those of the scalar path in the same order.  numpy's own exp, expm1, log,
+tan, sinh, cosh and tanh (its SIMD loops, on a CPU that has them) round differently from
+libm's by up to 2 ulp, so there the two paths agree to a few ulp, not always bitwise (the audit
+measures the array path against the reference); with ``NPY_DISABLE_CPU_FEATURES`` set to the
+CPU's dispatched features numpy calls libm, and they agree bit for bit
+(tests/test_kernels_numpy.py).
 """
 from __future__ import annotations
 
