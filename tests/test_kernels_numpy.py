@@ -126,7 +126,10 @@ def test_arguments_broadcast_and_keep_their_shape(modules):
 
 def _cpu_dispatch() -> str:
     """The dispatched CPU features numpy found on this machine (those NPY_DISABLE_CPU_FEATURES may name)."""
-    from numpy._core._multiarray_umath import __cpu_dispatch__, __cpu_features__
+    try:
+        from numpy._core._multiarray_umath import __cpu_dispatch__, __cpu_features__
+    except ImportError:           # numpy's layout changed: the bitwise comparison needs this switch
+        pytest.skip("numpy does not tell its dispatched CPU features")
     return " ".join(f for f in __cpu_dispatch__ if __cpu_features__.get(f))
 
 
