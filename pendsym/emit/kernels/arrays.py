@@ -44,13 +44,14 @@ _TOP = "_shape"
 
 class KernelNumPy(NumPyPrinter):
     """SymPy's numpy printer for the array path: an expression prints as the scalar path's
-    (KernelPy) with ``numpy.`` for ``math.``, a power as ``numpy.float_power`` (libm's pow),
-    a Select as ``numpy.where``, a shared part as its array version."""
+    (KernelPy) with ``numpy.`` for ``math.``, a power as ``numpy.float_power`` (libm's pow), a
+    shared part as its array version.  The choices inside an expression (Piecewise, ITE, and, or,
+    Select) never reach it: :func:`_hoist` computes them piece by piece first."""
 
     def __init__(self, settings=None):
         super().__init__({"fully_qualified_modules": True, **(settings or {})})
         self.memo: dict[str, str] = {}        # a power's text → the name it is computed into
-        self.pending: list[str] = []          # (name, text) of the powers of the statement being printed
+        self.pending: list[tuple[str, str]] = []   # (name, text) of the powers of the statement being printed
         self.names = itertools.count()
 
     def statement(self, e: sp.Basic) -> tuple[str, list[tuple[str, str]]]:
@@ -66,10 +67,6 @@ class KernelNumPy(NumPyPrinter):
 
     def _print_Magnitude(self, expr) -> str:
         return f"numpy.abs({self._print(expr.args[0])})"
-
-    def _print_Select(self, expr) -> str:
-        d, b, c = (self._print(a) for a in expr.args)
-        return f"numpy.where(({d}) > 0, ({b}), ({c}))"
 
     def _print_AppliedUndef(self, expr) -> str:
         return f"_{expr.func.__name__}_array({', '.join(self._print(a) for a in expr.args)})"
