@@ -8,7 +8,7 @@ from its comparisons), so that it serves the audit, the bench and the tests alik
   just inside them, 0 and the smallest subnormal where accepted, +inf where accepted, each
   switch and the doubles on either side);
 - :func:`compare`: the array path on all the points at once against the scalar path point by
-  point: how many differ, and the largest difference in ulp of the scalar value;
+  point: how many differ, and the largest difference in ulp of the scalar value and relative;
 - :func:`ns_per_element`: the array path's time per element on random points (min, median).
 """
 from __future__ import annotations
@@ -101,13 +101,14 @@ def compare(fn: Callable, pts: numpy.ndarray) -> dict:
     array = fn(*[numpy.ascontiguousarray(c) for c in pts.T])
     same = (array == scalar) | (numpy.isnan(array) & numpy.isnan(scalar))
     same &= numpy.signbit(array) == numpy.signbit(scalar)
-    worst, at = 0.0, None
+    worst, rel, at = 0.0, 0.0, None
     for i in numpy.flatnonzero(~same):
         a, s = float(array[i]), float(scalar[i])
         d = abs(a - s) / math.ulp(s) if math.isfinite(s) and math.isfinite(a) and s != 0 else math.inf
+        rel = max(rel, abs(a - s) / abs(s) if s != 0 and math.isfinite(d) else math.inf)
         if d > worst:
             worst, at = d, [float(v) for v in pts[i]]
-    return {"points": len(pts), "differ": int((~same).sum()), "max_ulp": worst, "at": at}
+    return {"points": len(pts), "differ": int((~same).sum()), "max_ulp": worst, "max_rel": rel, "at": at}
 
 
 def ns_per_element(fn: Callable, dom: Sequence[tuple], seed: str, n: int = ARRAY_POINTS,
