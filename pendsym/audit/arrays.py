@@ -104,7 +104,7 @@ def compare(fn: Callable, pts: numpy.ndarray) -> dict:
     worst, rel, at = 0.0, 0.0, None
     for i in numpy.flatnonzero(~same):
         a, s = float(array[i]), float(scalar[i])
-        d = abs(a - s) / math.ulp(s) if math.isfinite(s) and math.isfinite(a) and s != 0 else math.inf
+        d = abs(a - s) / math.ulp(max(abs(a), abs(s))) if math.isfinite(s) and math.isfinite(a) else math.inf
         rel = max(rel, abs(a - s) / abs(s) if s != 0 and math.isfinite(d) else math.inf)
         if d > worst:
             worst, at = d, [float(v) for v in pts[i]]

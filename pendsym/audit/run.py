@@ -322,7 +322,7 @@ def numpy_figures(job: Job, judge: Judge, rows: Sequence[tuple]) -> dict:
     worst_diff, worst = 0.0, 0.0
     for i in numpy.flatnonzero(~same):
         r, a, s = rows[i], float(array[i]), float(scalar[i])
-        diff = abs(a - s) / math.ulp(s) if math.isfinite(a) and math.isfinite(s) and s != 0 else math.inf
+        diff = abs(a - s) / math.ulp(max(abs(a), abs(s))) if math.isfinite(a) and math.isfinite(s) else math.inf
         worst_diff = max(worst_diff, diff)
         m = max(1.0, r[4]) if not math.isnan(r[4]) else 1.0
         scaled = (r[2] + diff) / m
