@@ -9,7 +9,9 @@ from its comparisons), so that it serves the audit, the bench and the tests alik
   switch and the doubles on either side);
 - :func:`compare`: the array path on all the points at once against the scalar path point by
   point: how many differ, and the largest difference in ulp of the scalar value and relative;
-- :func:`ns_per_element`: the array path's time per element on random points (min, median).
+- :func:`ns_per_element`: the array path's time per element on random points (min, median);
+- :func:`figures`: for ``make audit``, the same comparison on the audit's points, with the array
+  path's scaled error where the two differ.
 """
 from __future__ import annotations
 
@@ -131,3 +133,29 @@ def ns_per_element(fn: Callable, dom: Sequence[tuple], seed: str, n: int = ARRAY
         fn(*cols)
         runs.append((time.perf_counter() - t0) * 1e9 / n)
     return round(min(runs), 1), round(statistics.median(runs), 1), n
+
+
+def figures(py: Callable, judge, rows: Sequence[tuple], bound: float) -> dict:
+    """For the audit (`judge`: its Judge; `rows`: its rows, (max scaled, point, Python ulp, C ulp, κ, …)):
+    the array path (the Python kernel `py` called on numpy arrays) on every point at once,
+    against the scalar path: the points where the two differ and by how many ulp at most; its
+    scaled error where they differ (the scalar one plus the difference, an upper bound, unless that
+    could exceed the bound: then against the reference)."""
+    pts = numpy.array([r[1] for r in rows], dtype=float)
+    scalar = numpy.array([judge._call(py, tuple(p)) for p in pts])
+    array = py(*[numpy.ascontiguousarray(c) for c in pts.T])
+    same = (array == scalar) | (numpy.isnan(array) & numpy.isnan(scalar))
+    worst_diff, worst = 0.0, 0.0
+    for i in numpy.flatnonzero(~same):
+        r, a, s = rows[i], float(array[i]), float(scalar[i])
+        diff = abs(a - s) / math.ulp(max(abs(a), abs(s))) if math.isfinite(a) and math.isfinite(s) else math.inf
+        worst_diff = max(worst_diff, diff)
+        m = max(1.0, r[4]) if not math.isnan(r[4]) else 1.0
+        scaled = (r[2] + diff) / m
+        if scaled > bound:                       # measured: the array value against the reference
+            k = judge.kappa(r[1]) if math.isnan(r[4]) else r[4]
+            scaled = judge.ulp(a, judge.truth(r[1])) / max(1.0, k if not math.isnan(k) else 1.0)
+        worst = max(worst, scaled)
+    py_worst = max((r[5] for r in rows), default=0.0)
+    return {"points": len(rows), "differ": int((~same).sum()), "max_diff_ulp": round(worst_diff, 3),
+            "worst_scaled": round(max(worst, py_worst), 3)}

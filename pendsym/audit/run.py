@@ -43,7 +43,6 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 import mpmath as mp
-import numpy
 import sympy as sp
 
 from .. import pipeline, schedule, stages
@@ -305,34 +304,9 @@ def audit_one(job: Job, points: int = POINTS) -> dict:
               "worst_ulp": round(max(r[3] for r in rows), 3), "over_bound": fails_c},
         "domain_accepted": [list(d) for d in job.domain],
         "outside": outside(job, ctypes.get_errno),
-        "numpy": numpy_figures(job, judge, rows) if f"return _{job.name}_array(" in job.code else None,
+        "numpy": ar.figures(job.py, judge, rows, kn.BOUND) if f"return _{job.name}_array(" in job.code else None,
         "cpu_s": round(time.process_time() - start, 1),
     }
-
-
-def numpy_figures(job: Job, judge: Judge, rows: Sequence[tuple]) -> dict:
-    """The array path (the Python kernel called on numpy arrays) on every point of the audit at once,
-    against the scalar path: the points where the two differ and by how many ulp at most; its
-    scaled error where they differ (the scalar one plus the difference, an upper bound, unless that
-    could exceed the bound: then against the reference)."""
-    pts = numpy.array([r[1] for r in rows], dtype=float)
-    scalar = numpy.array([Judge._call(job.py, tuple(p)) for p in pts])
-    array = job.py(*[numpy.ascontiguousarray(c) for c in pts.T])
-    same = (array == scalar) | (numpy.isnan(array) & numpy.isnan(scalar))
-    worst_diff, worst = 0.0, 0.0
-    for i in numpy.flatnonzero(~same):
-        r, a, s = rows[i], float(array[i]), float(scalar[i])
-        diff = abs(a - s) / math.ulp(max(abs(a), abs(s))) if math.isfinite(a) and math.isfinite(s) else math.inf
-        worst_diff = max(worst_diff, diff)
-        m = max(1.0, r[4]) if not math.isnan(r[4]) else 1.0
-        scaled = (r[2] + diff) / m
-        if scaled > kn.BOUND:                       # measured: the array value against the reference
-            k = judge.kappa(r[1]) if math.isnan(r[4]) else r[4]
-            scaled = judge.ulp(a, judge.truth(r[1])) / max(1.0, k if not math.isnan(k) else 1.0)
-        worst = max(worst, scaled)
-    py_worst = max((r[5] for r in rows), default=0.0)
-    return {"points": len(rows), "differ": int((~same).sum()), "max_diff_ulp": round(worst_diff, 3),
-            "worst_scaled": round(max(worst, py_worst), 3)}
 
 
 # ----------------------------------------------------------------- the emitted code, loaded as a user would
