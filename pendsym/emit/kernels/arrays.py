@@ -264,7 +264,7 @@ def array_guard(f: Function) -> list[str]:
 def dispatch(f: Function) -> str:
     """The line of the scalar path that sends numpy arrays to the array path."""
     params = [KernelNumPy()._print(s) for s in f.params]
-    test = " or ".join(f"isinstance({x}, numpy.ndarray)" for x in params)
+    test = " or ".join(f"isinstance({x}, _ndarray)" for x in params)    # _ndarray: numpy.ndarray, bound once
     return f"{INDENT}if {test}:\n{INDENT * 2}return _{f.name}_array({', '.join(params)})"
 
 
