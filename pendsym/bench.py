@@ -9,7 +9,8 @@ The swing time (one swing, T = π/k at small amplitude) of θ'' + k² sin θ = 0
     on the same array (per element, min and median of 5 calls);
   * mpmath's ellipk, 2K(sin² α/2)/k at 15 digits;
   * mpmath odefun integration of the ODE at 15, 20 and 30 digits.
-The reference is ellipk at 50 digits.  Timings are wall-clock per evaluation
+The reference is ellipk at 50 digits.  Then every generated kernel of every memoir
+(:mod:`pendsym.bench_kernels`: naive printed form, C, Python, numpy, scipy, mpmath).  Timings are wall-clock per evaluation
 on this machine (ctypes call overhead included for C); they are not
 reproducible to the byte, so make derive never writes them.
 """
@@ -32,7 +33,7 @@ import mpmath as mp
 import numpy
 import scipy.special
 
-from . import registry
+from . import bench_kernels, registry
 from .io import write_atomic
 
 ALPHAS = [10 ** (-3 + 3.4771 * i / 23) for i in range(24)]   # 1e-3 … 3
@@ -251,7 +252,7 @@ def main(argv=None) -> int:
     for r in rows:
         med = f" (median {r['median_seconds_per_eval'] * 1e9:.1f} ns)" if r.get("median_seconds_per_eval") else ""
         print(f"{r['method']:<44} {r['seconds_per_eval'] * 1e9:12.1f} ns{med}  max rel err {r['max_rel_error']:.2e}")
-    return 0
+    return bench_kernels.main(["--out", args.out, "--generated", args.generated])   # every kernel of every memoir
 
 
 if __name__ == "__main__":

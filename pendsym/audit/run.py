@@ -12,7 +12,11 @@ For each kernel listed in ``generated/results.json``:
    every point whose error exceeds the bound is confirmed with :data:`CONFIRM_DIGITS` more;
    κ is the condition number of :func:`pendsym.emit.kernels.measure.reference` (computed where
    the error in ulp could exceed the scaled error already found: scaled ≤ ulp);
-3. the C time per call is measured on random points of the domain (min and median of 5 runs).
+3. the C time per call is measured on random points of the domain (min and median of 5 runs);
+4. the Python kernel is called once more on numpy arrays of every point of its audit (its array
+   path, :mod:`.arrays`): where it departs from the scalar path bitwise (numpy's SIMD exp, tanh …
+   against libm's), by how many ulp, and its scaled error there; and its time per element on up
+   to 10**6 random points.
 
 It writes ``<out>/audit.json`` and ``<out>/audit.md`` and exits 1 when a kernel is over
 :data:`pendsym.emit.kernels.BOUND` in either language.  Seeds are the kernels' names.
@@ -46,6 +50,7 @@ from ..emit import kernels as kn
 from ..emit.kernels.limits import LIMIT_FAR, far_dps, far_values, ref_dps
 from ..emit.kernels.measure import reference
 from ..result import KernelArg
+from . import arrays as ar
 from . import points as pt
 
 LIMIT_AT = 1e-80         # the reference at 0 of an argument accepted down to 0: the form here
@@ -299,6 +304,7 @@ def audit_one(job: Job, points: int = POINTS) -> dict:
               "worst_ulp": round(max(r[3] for r in rows), 3), "over_bound": fails_c},
         "domain_accepted": [list(d) for d in job.domain],
         "outside": outside(job, ctypes.get_errno),
+        "numpy": ar.figures(job.py, judge, rows, kn.BOUND) if f"return _{job.name}_array(" in job.code else None,
         "cpu_s": round(time.process_time() - start, 1),
     }
 
@@ -366,6 +372,17 @@ def c_ns(lib: ctypes.CDLL, job: Job) -> tuple[float, float]:
     return round(min(runs), 1), round(statistics.median(runs), 1)
 
 
+NUMPY_BUDGET = 0.1       # seconds a numpy timing call may take (10**6 elements, or fewer for a heavy kernel)
+
+
+def numpy_ns(job: Job) -> tuple[float, float, int]:
+    """(min, median, elements) ns per element of the Python kernel on numpy arrays of up to
+    ar.ARRAY_POINTS random points of its declared domain (log-uniform for a geometric argument),
+    over ar.REPEATS calls."""
+    return ar.ns_per_element(job.py, [(a.name, a.lo, a.hi, a.log) for a in job.args], job.name,
+                             budget=NUMPY_BUDGET)
+
+
 def jobs(generated: Path, work: Path, only: Sequence[str] = ()) -> tuple[dict[str, Job], dict[str, ctypes.CDLL]]:
     """The kernels listed in results.json, with their emitted Python and C loaded, and the
     derived forms of their Results (from the cache of make derive)."""
@@ -403,14 +420,22 @@ def table(rows: Sequence[dict]) -> str:
         ns = r.get("c_ns")
         lines.append(f"| `{r['kernel']}` | {r['points']} | {r['python']['worst_scaled']:.3g}, {r['c']['worst_scaled']:.3g} "
                      f"| {_fmt_point(r['args'], r['worst_at'])} | "
-                     f"{f'{ns[0]:.0f}, {ns[1]:.0f}' if ns else '—'} | {r.get('numpy_ns') or '—'} |")
+                     f"{f'{ns[0]:.0f}, {ns[1]:.0f}' if ns else '—'} | {_numpy_cell(r)} |")
     return "\n".join(lines) + "\n"
+
+
+def _numpy_cell(r: dict) -> str:
+    """numpy ns/element (min, median), and where the array path departs from the scalar path bitwise
+    (numpy's SIMD exp, tanh … against libm's) the points and the largest difference in ulp."""
+    ns, nf = r.get("numpy_ns"), r.get("numpy") or {}
+    cell = f"{ns[0]:.0f}, {ns[1]:.0f}" + (f" (on {ns[2]:.0e})" if len(ns) > 2 and ns[2] < ar.ARRAY_POINTS else "") if ns else "—"
+    return cell + (f" ({nf['differ']} pts ≤ {nf['max_diff_ulp']:.3g} ulp from scalar)" if nf.get("differ") else "")
 
 
 def over(rows: Sequence[dict]) -> list[dict]:
     """The kernels over the bound in either language, or departing from the behaviour outside the domain."""
     return [r for r in rows if r["python"]["worst_scaled"] > kn.BOUND or r["c"]["worst_scaled"] > kn.BOUND
-            or r.get("outside")]
+            or r.get("outside") or (r.get("numpy") or {}).get("worst_scaled", 0.0) > kn.BOUND]
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -433,6 +458,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not ns.no_timing:
             for r in rows:
                 r["c_ns"] = list(c_ns(libs[r["memoir"]], todo[r["kernel"]]))
+                r["numpy_ns"] = list(numpy_ns(todo[r["kernel"]])) if r.get("numpy") else None
     out.mkdir(parents=True, exist_ok=True)
     (out / "audit.json").write_text(json.dumps({"bound": kn.BOUND, "kernels": rows}, indent=1) + "\n")
     (out / "audit.md").write_text(table(rows))
@@ -442,6 +468,7 @@ def main(argv: Sequence[str] | None = None) -> int:
           f"{time.monotonic() - t0:.0f} s wall, ~{cpu:.0f} s CPU; written to {out}")
     for r in bad:
         print(f"OVER THE BOUND {r['kernel']}: Python {r['python']['worst_scaled']:.3g} "
-              f"({r['python']['over_bound']} points), C {r['c']['worst_scaled']:.3g} ({r['c']['over_bound']} points) "
+              f"({r['python']['over_bound']} points), C {r['c']['worst_scaled']:.3g} ({r['c']['over_bound']} points), "
+              f"numpy {(r.get('numpy') or {}).get('worst_scaled', math.nan):.3g} "
               f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else ""))
     return 1 if bad else 0

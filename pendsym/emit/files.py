@@ -6,10 +6,12 @@ figures, and the accuracy contract is docs/kernel-accuracy.md.
 """
 from __future__ import annotations
 
+import functools
 from typing import Sequence
 
 from ..io import content_hash
 from . import kernels as kn
+from .kernels.arrays import numpy_definition
 from .layout import ENV
 
 
@@ -33,8 +35,8 @@ def _definitions(ks: Sequence[kn.Kernel], lang: str, docs: bool) -> list[str]:
     """Every function of the file printed in lang; with `docs`, the kernels' docstrings (the
     parts always carry theirs)."""
     doc = {k.name: k.docstring() for k in ks} if docs else {}
-    return [kn.definition(f, lang, kn.part_doc(f) if f.callers else doc.get(f.name, ""))
-            for f in _functions(ks)]
+    emit = numpy_definition if lang == "py" else functools.partial(kn.definition, lang=lang)   # Python: numpy arrays too
+    return [emit(f, doc=kn.part_doc(f) if f.callers else doc.get(f.name, "")) for f in _functions(ks)]
 
 
 def python_module(memoir: str, ks: Sequence[kn.Kernel]) -> str:

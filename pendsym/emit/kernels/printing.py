@@ -248,10 +248,11 @@ def kernel_function(name: str, args: Sequence[KernelArg], expr: sp.Expr,
     return Function(name, tuple(parameter(a) for a in args), printable(expr, args), domain=dom)
 
 
-def definition(f: Function, lang: str, doc: str = "") -> str:
+def definition(f: Function, lang: str, doc: str = "", dispatch: str = "") -> str:
     """The whole definition of f, laid out by templates/function.<lang>.j2 (doc: the Python
-    docstring or the C comment above the function)."""
-    return lay_out(f"function.{lang}.j2", f=printed(f, lang), doc=doc)
+    docstring or the C comment above the function; dispatch: Python lines before the guard that
+    send numpy arrays to the array path, :func:`.arrays.dispatch`)."""
+    return lay_out(f"function.{lang}.j2", f=printed(f, lang), doc=doc, dispatch=dispatch)
 
 
 def c_function(k) -> tuple[str, str]:
