@@ -1,11 +1,13 @@
 """Chapter III's kernels at u = inf give the thread (issue #13; docs/kernel-accuracy.md, "Above hi").
 
 The reference is chapter IV's limits u → ∞ of the derived forms, taken by SymPy and checked against the shot thread
-pendulum (ch4_thread: eq184.ends, eq184.F, eq185.I_J), not the kernels' far forms.  The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
+pendulum (ch4_thread: eq184.ends, eq184.F, eq185.I_J; K and n² of the direct blade: the thread's (193) with z' the
+negative root of its (30), and (192)), not the kernels' far forms.  The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
 """
 import importlib.util
 import math
 import shutil
+import sys
 
 import mpmath as mp
 import pytest
@@ -27,13 +29,16 @@ THREAD = {
     "eq170_F": (2, "haag1935.eq184.F", 2),
     "eq182_I": (4, "haag1935.eq185.I_J", 0),
     "eq183_J": (3, "haag1935.eq185.I_J", 1),
+    "eq036_K_uniform": (4, "haag1935.eq193.K", None),
+    "eq034_n2_z_uniform": (5, "haag1935.eq192.n2", None),
 }
-# K (36) and n² (34) keep u ≤ 700: their far forms (th → 1, the root's radicand expanded in 1/u) lose accuracy to
-# cancellation (the rule measures them and refuses: docs/kernel-accuracy.md); the thread's K and n² are (193), (192)
-NOT_AT_INFINITY = ("eq036_K_uniform", "eq034_n2_z_uniform")
+# K (36) and n² (34): above u = 700 their far forms, and above U_flat (where every 1/u correction is below 2⁻⁶⁰) the
+# limit itself (their far forms overflow inside the root near u = 1e80 in Python): see test_K_and_n2_above_hi
+FAR_ROOT = "haag1935.eq030.thread"
 ARG_ORDER = {"eq159_v0": ("lambda", "u"), "eq159_w0": ("lambda", "u"), "eq159_wl": ("lambda", "u"),
              "eq159_beta1": ("lambda", "u"), "eq168_F1": ("u", "K"), "eq169_F2": ("u", "K"), "eq170_F": ("u", "K"),
-             "eq182_I": ("lambda", "u", "K", "m'"), "eq183_J": ("lambda", "u", "K")}
+             "eq182_I": ("lambda", "u", "K", "m'"), "eq183_J": ("lambda", "u", "K"),
+             "eq036_K_uniform": ("a", "R", "lambda", "u"), "eq034_n2_z_uniform": ("a", "R", "lambda", "u", "g")}
 
 
 @pytest.fixture(scope="module")
@@ -53,11 +58,20 @@ def emitted(generated, tmp_path_factory):
 @pytest.fixture(scope="module")
 def limits():
     """{kernel: the thread's value as a SymPy expression of the other arguments}."""
-    built = stages.results(sorted({rid for _, rid, _ in THREAD.values() if rid}))
+    built = stages.results(sorted({rid for _, rid, _ in THREAD.values() if rid} | {FAR_ROOT}))
     out = {}
     for name, (_, rid, part) in THREAD.items():
         form = built[rid].derived
         out[name] = form[part] if part is not None else form
+    # (193) is in z', the negative root of the thread's (30) (its roots' product is −R²)
+    quadratic = built[FAR_ROOT].derived
+    z = next(s for s in quadratic.free_symbols if s.name == "z")
+    K = out["eq036_K_uniform"]
+    zp = next(s for s in K.free_symbols if s.name == "z'")
+    at = {s: AT[s.name] for s in quadratic.free_symbols if s.name in AT}
+    roots = [r for r in sp.solve(quadratic, z) if sp.N(r.subs(at)) < 0]
+    assert len(roots) == 1, roots
+    out["eq036_K_uniform"] = K.subs(zp, roots[0])
     return out
 
 
@@ -101,32 +115,66 @@ def test_a_wrong_thread_value_would_fail(limits):
         assert abs(mp.mpf(wrong) - value) / mp.mpf(math.ulp(float(value))) > 4
 
 
-@pytest.mark.parametrize("name", NOT_AT_INFINITY)
-def test_K_and_n2_keep_their_declared_hi(emitted_all, name):
-    """u = inf and u above 700 are domain errors for K and n² of the direct blade (their far forms were measured
-    and refused): ValueError in Python, NaN in C."""
-    n = {"eq036_K_uniform": 4, "eq034_n2_z_uniform": 5}[name]
-    p = [0.5, 0.1, 0.2, math.inf, 9.81][:n]
-    for lang, fn in emitted_all[name].items():
-        if lang == "Python":
-            with pytest.raises(ValueError, match=name):
-                fn(*p)
-        else:
-            assert math.isnan(fn(*p))
+KU = ("eq036_K_uniform", "eq034_n2_z_uniform")
+KU_IDS = {"eq036_K_uniform": "haag1935.eq036.K_uniform", "eq034_n2_z_uniform": "haag1935.eq034.n2_z_uniform"}
 
 
-@pytest.fixture(scope="module")
-def emitted_all(generated, tmp_path_factory):
-    spec = importlib.util.spec_from_file_location("ch4k2_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    out = {name: {"Python": getattr(mod, name)} for name in NOT_AT_INFINITY}
-    if shutil.which("cc"):
-        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
-        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch4k2"))
-        out["eq036_K_uniform"]["C"] = kn.c_callable(lib, "eq036_K_uniform", 4)
-        out["eq034_n2_z_uniform"]["C"] = kn.c_callable(lib, "eq034_n2_z_uniform", 5)
-    return out
+def _far_points() -> list[float]:
+    """u above hi = 700: the double after it, 1.01hi … 2hi, decades 10³ … 10³⁰⁸ (and 2.8×), both sides of 1e25 (K's
+    and n²'s U_flat, computed by limits.flat_form), and the largest double."""
+    hi = 700.0
+    pts = [math.nextafter(hi, math.inf), hi * 1.01, hi * 1.07, hi * 1.5, hi * 2]
+    pts += [m * 10.0 ** k for k in range(3, 309, 5) for m in (1.0, 2.8) if m * 10.0 ** k < math.inf]
+    pts += [math.nextafter(1e25, 0), 1e25, math.nextafter(1e25, math.inf), 1e308, sys.float_info.max]
+    return pts
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", KU)
+def test_K_and_n2_above_hi(emitted, name):
+    """K (36) and n² (34) above u = 700, in C and Python, within 4 ulp × max(1, κ) of the derived form at 50 digits
+    (plus 3 per decade of u: the form as derived cancels like u²), at seeded values of the other arguments."""
+    import random
+    derived = stages.results([KU_IDS[name]])[KU_IDS[name]].derived
+    by = {s.name: s for s in derived.free_symbols}
+    syms = [by[a] for a in ARG_ORDER[name]]
+    f, cond = reference(derived, syms)
+    rng = random.Random(name)
+    boxes = {"a": (1e-2, 5.0), "R": (1e-3, 2.0), "lambda": (1e-3, 10.0), "g": (9.7, 9.9)}
+    for u in _far_points():
+        for _ in range(2):
+            p = [u if a == "u" else math.exp(rng.uniform(math.log(boxes[a][0]), math.log(boxes[a][1])))
+                 for a in ARG_ORDER[name]]
+            with mp.workdps(50 + 3 * math.ceil(math.log10(u))):
+                xs = [mp.mpf(v) for v in p]
+                true = f(*xs)
+                kappa = float(cond(*xs))
+                for lang, fn in emitted[name].items():
+                    got = fn(*p)
+                    err = float(abs(mp.mpf(got) - true) / mp.mpf(math.ulp(float(true))))
+                    assert err <= 4 * max(1.0, kappa), (name, lang, p, got, float(true), err, kappa)
+
+
+def test_a_scaled_K_at_infinity_would_fail(limits):
+    """The test can fail: K's thread value times 1 + 3e-15 is over 4 ulp × max(1, κ) from it."""
+    value, kappa = _value(limits["eq036_K_uniform"], "eq036_K_uniform")
+    wrong = float(value) * (1 + 3e-15)
+    with mp.workdps(50):
+        assert abs(mp.mpf(wrong) - value) / mp.mpf(math.ulp(float(value))) > 4 * max(1.0, kappa)
+
+
+@pytest.mark.parametrize("name", KU)
+def test_K_and_n2_nan_and_minus_inf_stay_domain_errors(emitted, name):
+    """u = NaN and −inf are outside the accepted domain [1e-6, +inf]: ValueError in Python, NaN in C."""
+    n = THREAD[name][0]
+    for bad in (math.nan, -math.inf):
+        p = [0.5, 0.1, 0.2, bad, 9.81][:n]
+        for lang, fn in emitted[name].items():
+            if lang == "Python":
+                with pytest.raises(ValueError, match=name):
+                    fn(*p)
+            else:
+                assert math.isnan(fn(*p))
 
 
 @pytest.mark.parametrize("n", [2, 3, 4, 5])

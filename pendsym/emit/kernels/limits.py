@@ -13,7 +13,9 @@ has a finite limit as the hard argument x → ∞, the kernel evaluates above hi
 (:func:`far_form`: the exponentially small terms dropped, the rest written in 1/x, so that x = inf
 gives the limit), and the accepted domain reaches up to +inf if the emitted code holds the bound at
 every value of :data:`far_values` (the reference at +inf: the derived form at LIMIT_FAR[1], or 0 where
-it falls by 1e-30 from LIMIT_FAR[0]).
+it falls by 1e-30 from LIMIT_FAR[0]).  Where the far form fails there (it may overflow in double inside a root,
+λ⁴/u⁴ at u = 1e80, where its value is the limit already), a third region is tried: above U_flat
+(:func:`flat_form`: where the far form's first correction is below 2⁻⁶⁰ relative) the limit itself, free of x.
 """
 from __future__ import annotations
 
@@ -153,6 +155,16 @@ def far_form(expr: sp.Expr, x: sp.Symbol) -> sp.Expr | None:
     A rational function of E = e^{−x/q} and x (:func:`.rules._in_E`) keeps the leading terms of its
     numerator and denominator, c(x)·E^k (k < 0: it grows, no finite limit); otherwise th and coth of
     c·x (c > 0) are 1.  The rest is written in t = 1/x, cancelled (:func:`_cancelled`), and t = 1/x."""
+    got = _far_rest(expr, x)
+    if got is None:
+        return None
+    rest, t, decay = got
+    return _in_reciprocal(rest, t, x) * decay
+
+
+def _far_rest(expr: sp.Expr, x: sp.Symbol) -> tuple | None:
+    """(rest, t, decay): :func:`far_form` before t = 1/x, rest(t) cancelled in t = 1/x, times decay
+    (e^{−k·x/q} where the form is exponentially small, else 1); None where there is no far form."""
     t = sp.Dummy("t", positive=True)
     got = _in_E(expr, x)
     if got is not None:
@@ -160,13 +172,54 @@ def far_form(expr: sp.Expr, x: sp.Symbol) -> sp.Expr | None:
         (a, n_a), (b, d_b) = _leading(sp.expand(num), E), _leading(sp.expand(den), E)
         if a < b:
             return None
-        rest = _cancelled((n_a / d_b).subs(x, 1 / t), t)
-        return _in_reciprocal(rest, t, x) * (sp.exp(-(a - b) * x / q) if a > b else 1)
+        return _cancelled((n_a / d_b).subs(x, 1 / t), t), t, (sp.exp(-(a - b) * x / q) if a > b else sp.Integer(1))
     hyper = [f for f in expr.atoms(sp.Function) if f.has(x) and not isinstance(f, sp.Piecewise)]
     if not hyper or any(not isinstance(f, (sp.tanh, sp.coth)) or not (f.args[0] / x).is_positive for f in hyper):
         return None
     rest = expr.xreplace({f: sp.Integer(1) for f in hyper}).subs(x, 1 / t)
-    return _in_reciprocal(_cancelled(rest, t), t, x)
+    return _cancelled(rest, t), t, sp.Integer(1)
+
+
+FLAT_BITS = 60        # above U_flat every 1/x correction of the far form is below 2⁻⁶⁰ relative: the limit itself
+FLAT_SAMPLES = 64     # seeded points of the other arguments (and the box's corners) for U_flat's ratio |c_1/c_0|
+
+
+def flat_form(expr: sp.Expr, args: Sequence[KernelArg], x: sp.Symbol, seed: str) -> tuple | None:
+    """(U_flat, limit): the limit at x = +inf (the far form at t = 1/x = 0, free of x), and the x above which the
+    far form's first correction c_1·t (rest(t) = c_0 + c_1 t + O(t²)) is below 2^−FLAT_BITS of c_0, with c_1/c_0
+    at its largest over the box's corners and FLAT_SAMPLES seeded points of the other arguments, times 2¹⁰,
+    rounded up to a power of 10.  Above U_flat the far form in double may overflow inside a root (λ⁴/u⁴ at
+    u = 1e80 in Python) where its value is the limit already.  None where the far form decays exponentially,
+    its limit or first correction is not finite, or U_flat would not be finite."""
+    got = _far_rest(expr, x)
+    if got is None or got[2] != 1:
+        return None
+    rest, t, _ = got
+    limit, first = rest.subs(t, 0), sp.diff(rest, t).subs(t, 0)
+    if limit.has(x) or first.has(x) or limit.has(t) or first.has(t):
+        return None
+    others = [a for a in args if a.name != x.name]
+    syms = [next(s for s in expr.free_symbols if s.name == a.name) for a in others]
+    ratio = sp.lambdify(syms, first / limit, modules="mpmath")
+    rng = random.Random(seed + ":flat")
+    corners = [[(a.lo, a.hi)[(k >> j) & 1] for j, a in enumerate(others)] for k in range(2 ** len(others))]
+    seeded = [[rng.uniform(a.lo, a.hi) if not a.log else math.exp(rng.uniform(math.log(a.lo), math.log(a.hi)))
+               for a in others] for _ in range(FLAT_SAMPLES)]
+    worst = mp.mpf(0)
+    with mp.workdps(50):
+        for p in corners + seeded:
+            try:
+                r = abs(ratio(*[mp.mpf(v) for v in p]))
+            except (ZeroDivisionError, ValueError):
+                return None
+            if not mp.isfinite(r):
+                return None
+            worst = max(worst, r)
+        bound = worst * mp.mpf(2) ** (FLAT_BITS + 10)
+        if bound == 0:
+            return None
+        u_flat = 10.0 ** max(0, int(mp.ceil(mp.log10(bound))))
+    return (u_flat, limit) if math.isfinite(u_flat) else None
 
 
 def _in_reciprocal(e: sp.Expr, t: sp.Symbol, x: sp.Symbol) -> sp.Expr:
@@ -197,12 +250,37 @@ def beyond(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: sp.Expr, d
     i = list(args).index(hard)
     dom = list(domain)
     dom[i] = (dom[i][0], math.inf)
+    dom = tuple(dom)
     whole = sp.Piecewise((far, x > hard.hi), (form, True))
-    fn = emitted_py(seed, args, whole, tuple(dom))
+    if _far_holds(emitted_py(seed, args, whole, dom), expr, args, i, seed, hard.hi):
+        return whole, dom
+    # the far form may overflow in double where its corrections are already below the last bit (K, n²: λ⁴/u⁴ in a
+    # root): above U_flat the limit itself (issue #13)
+    flat = flat_form(expr, args, x, seed)
+    if flat is None or not flat[0] > hard.hi:
+        return None
+    u_flat, limit = flat
+    # the far form as it is, then with each root's radicand factored (sqrt(P(x)/x⁴) → sqrt(P(x))/x²: P's powers of x
+    # are finite below U_flat; K of (36) at u = 1400 was 4.24 ulp as it is, within 2.6 so): the first that holds
+    for near in (far, _roots_factored(far)):
+        whole = sp.Piecewise((limit, x > u_flat), (near, x > hard.hi), (form, True))
+        if _far_holds(emitted_py(seed, args, whole, dom), expr, args, i, seed, hard.hi):
+            return whole, dom
+    return None
+
+
+def _roots_factored(e: sp.Expr) -> sp.Expr:
+    """e with the radicand of each square root factored (:func:`sympy.factor`)."""
+    return e.replace(lambda n: n.is_Pow and n.exp == sp.Rational(1, 2), lambda n: sp.sqrt(sp.factor(n.base)))
+
+
+def _far_holds(fn, expr: sp.Expr, args: Sequence[KernelArg], i: int, seed: str, hi: float) -> bool:
+    """The emitted fn holds the bound at every value of :func:`far_values` of argument i (4 seeded points of the
+    others at each; at +inf against the derived form's limit)."""
     syms = [next(s for s in expr.free_symbols if s.name == a.name) for a in args]
     f = sp.lambdify(syms, expr, modules="mpmath", cse=True)
     rng = random.Random(seed + ":far")
-    for v in far_values(hard.hi):
+    for v in far_values(hi):
         for _ in range(TRIES):
             p = [rng.uniform(a.lo, a.hi) if not a.log else math.exp(rng.uniform(math.log(a.lo), math.log(a.hi)))
                  for a in args]
@@ -210,5 +288,5 @@ def beyond(expr: sp.Expr, args: Sequence[KernelArg], seed: str, form: sp.Expr, d
             at = list(p)
             at[i] = v if v < math.inf else LIMIT_FAR[1]
             if not _holds(fn, f, p, at, zero=v == math.inf and _vanishes(f, p, i, LIMIT_FAR)):
-                return None
-    return whole, tuple(dom)
+                return False
+    return True
