@@ -98,9 +98,9 @@ def _to_mpfr(x):
     """A double or an mpmath mpf as an MPFR number, exactly (the context has at least its bits)."""
     if isinstance(x, float):
         return gmpy2.mpfr(x)
-    sign, man, exp, _ = mp.mpf(x)._mpf_
+    sign, man, exp, _ = x._mpf_ if isinstance(x, mp.mpf) else mp.mpf(x)._mpf_      # (never re-rounded)
     if not man:
-        return gmpy2.mpfr(x)            # 0, ±inf, NaN
+        return gmpy2.mpfr(float(x))     # 0, ±inf, NaN
     v = gmpy2.mul_2exp(gmpy2.mpfr(man), exp)
     return -v if sign else v
 
@@ -243,7 +243,7 @@ class Judge:
         if true == 0:
             return 0.0, None
         hi = float(true)
-        return hi, libmp.to_float(libmp.mpf_sub(mp.mpf(true)._mpf_, libmp.from_float(hi), 0))  # (exact)
+        return hi, libmp.to_float(libmp.mpf_sub(true._mpf_, libmp.from_float(hi), 0))  # (exact)
 
     @staticmethod
     def _ulp(got: float, parts: tuple | None) -> float:
