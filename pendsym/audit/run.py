@@ -112,7 +112,7 @@ def mpfr_form(expr: sp.Expr, syms) -> Callable | None:
     (ZeroDivisionError, ValueError) are trapped alike.  The same lambdified code as mpmath's
     (common subexpressions shared), ~10× faster per operation."""
     names = {type(f).__name__.lower() for f in expr.atoms(sp.Function)}
-    if expr.atoms(sp.Float) or not names <= set(MPFR_FUNCTIONS) or expr.has(sp.I):
+    if expr.atoms(sp.Float) or not names - {"piecewise"} <= set(MPFR_FUNCTIONS) or expr.has(sp.I):
         return None
     namespace = {"mpf": gmpy2.mpfr, "const_pi": gmpy2.const_pi, **MPFR_FUNCTIONS}
     g = sp.lambdify(list(syms), expr, modules=[namespace], cse=True,
@@ -394,6 +394,7 @@ def audit_one(job: Job, points: int = POINTS) -> dict:
         _, _, seen = pt.climb(r[1], r[0], score, job.args, job.name, CLIMB_BUDGET // max(1, len(starts)))
         tried += len(seen)
     top = max(rows, key=lambda r: (r[0], -sum(r[1])))
+    check = reference_check(judge, top)
     fails_py = sum(1 for r in rows if r[5] > kn.BOUND)
     fails_c = sum(1 for r in rows if r[6] > kn.BOUND)
     worst_py = max(rows, key=lambda r: r[5])
@@ -410,8 +411,23 @@ def audit_one(job: Job, points: int = POINTS) -> dict:
               "worst_ulp": round(max(r[3] for r in rows), 3), "over_bound": fails_c},
         "domain_accepted": [list(d) for d in job.domain],
         "outside": outside(job, ctypes.get_errno),
+        "reference": check,
         "cpu_s": round(time.process_time() - start, 1),
     }
+
+
+CHECK_DIGITS = 20        # more digits of the mpmath reference that confirms the worst point
+
+
+def reference_check(judge: Judge, top: tuple) -> dict:
+    """The worst point's errors again against mpmath's own form (:func:`reference`) at CHECK_DIGITS more
+    digits: an independent evaluation of the reference, which must agree to 1e-6 ulp."""
+    again = Judge.__new__(Judge)
+    again.job, again.engine = judge.job, "mpmath"
+    again.f, again.cond = reference(judge.job.expr, list(judge.job.syms))
+    e_py, e_c = again.errors(top[1], CHECK_DIGITS)
+    agrees = all((a == b) or abs(a - b) <= 1e-6 * max(1.0, abs(b)) for a, b in ((e_py, top[2]), (e_c, top[3])))
+    return {"engine": judge.engine, "checked_with": f"mpmath, +{CHECK_DIGITS} digits", "agrees": agrees}
 
 
 # ----------------------------------------------------------------- the emitted code, loaded as a user would
@@ -521,7 +537,7 @@ def table(rows: Sequence[dict]) -> str:
 def over(rows: Sequence[dict]) -> list[dict]:
     """The kernels over the bound in either language, or departing from the behaviour outside the domain."""
     return [r for r in rows if r["python"]["worst_scaled"] > kn.BOUND or r["c"]["worst_scaled"] > kn.BOUND
-            or r.get("outside")]
+            or r.get("outside") or not r.get("reference", {}).get("agrees", True)]
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -554,5 +570,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     for r in bad:
         print(f"OVER THE BOUND {r['kernel']}: Python {r['python']['worst_scaled']:.3g} "
               f"({r['python']['over_bound']} points), C {r['c']['worst_scaled']:.3g} ({r['c']['over_bound']} points) "
-              f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else ""))
+              f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else "")
+              + ("" if r.get("reference", {}).get("agrees", True) else "; the mpmath check of the reference disagrees"))
     return 1 if bad else 0
