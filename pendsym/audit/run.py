@@ -81,6 +81,8 @@ MPFR_FUNCTIONS = {"sin": gmpy2.sin, "cos": gmpy2.cos, "tan": gmpy2.tan, "sinh": 
                   "tanh": gmpy2.tanh, "exp": gmpy2.exp, "log": gmpy2.log, "sqrt": gmpy2.sqrt, "atan": gmpy2.atan,
                   "asin": gmpy2.asin, "acos": gmpy2.acos, "asinh": gmpy2.asinh, "acosh": gmpy2.acosh,
                   "atanh": gmpy2.atanh}
+MPFR_TRAPS = (gmpy2.DivisionByZeroError, gmpy2.InvalidOperationError, gmpy2.OverflowResultError,
+              gmpy2.UnderflowResultError, gmpy2.RangeError)
 MPFR_AGREE = 40          # digits the MPFR and mpmath forms must share at a test point (else mpmath is used)
 
 
@@ -105,12 +107,13 @@ def _to_mpfr(x):
     return -v if sign else v
 
 
-def mpfr_form(expr: sp.Expr, syms) -> Callable | None:
+def mpfr_form(expr: sp.Expr, syms, fallback: Callable) -> Callable | None:
     """expr as a function of mpmath numbers evaluated in MPFR (gmpy2) at mpmath's working precision,
     each operation correctly rounded, its value returned as an mpmath mpf; None where expr holds a
-    function MPFR lacks or a Float.  mpmath's own division by zero and invalid operations
-    (ZeroDivisionError, ValueError) are trapped alike.  The same lambdified code as mpmath's
-    (common subexpressions shared), ~10× faster per operation."""
+    function MPFR lacks or a Float.  Where MPFR would leave mpmath's behaviour (an overflow or underflow
+    of its exponent range, ±2^(2^62), a division by zero, an invalid operation) the point is evaluated by
+    `fallback`, mpmath's form, instead.  The same lambdified code as mpmath's (common subexpressions
+    shared), several times faster per operation."""
     names = {type(f).__name__.lower() for f in expr.atoms(sp.Function)}
     if expr.atoms(sp.Float) or not names - {"piecewise"} <= set(MPFR_FUNCTIONS) or expr.has(sp.I):
         return None
@@ -120,11 +123,15 @@ def mpfr_form(expr: sp.Expr, syms) -> Callable | None:
 
     def f(*xs):
         prec = mp.mp.prec
-        with gmpy2.context(precision=prec, trap_divzero=True, trap_invalid=True):
-            v = g(*[_to_mpfr(x) for x in xs])
-            if not gmpy2.is_finite(v):
-                return mp.mpf(float(v))
-            man, exp = v.as_mantissa_exp()
+        try:
+            with gmpy2.context(precision=prec, emax=gmpy2.get_emax_max(), emin=gmpy2.get_emin_min(),
+                               trap_divzero=True, trap_invalid=True, trap_overflow=True, trap_underflow=True):
+                v = g(*[_to_mpfr(x) for x in xs])
+                if not gmpy2.is_finite(v):
+                    return fallback(*xs)
+                man, exp = v.as_mantissa_exp()
+        except MPFR_TRAPS:
+            return fallback(*xs)
         return mp.mpf((int(man), int(exp)))             # exact: man has at most prec bits
     return f
 
@@ -154,7 +161,7 @@ def fast_reference(expr: sp.Expr, syms, probe: Sequence[float]) -> tuple[Callabl
     """(f, κ, engine): the reference in MPFR where :func:`mpfr_form` applies and agrees with mpmath's
     to MPFR_AGREE digits at the point `probe` (at 60 digits), else mpmath's (:func:`reference`)."""
     f_mp, cond_mp = reference(expr, list(syms))
-    f = mpfr_form(expr, syms)
+    f = mpfr_form(expr, syms, f_mp)
     if f is None:
         return f_mp, cond_mp, "mpmath"
     with mp.workdps(60):
