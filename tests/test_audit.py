@@ -116,6 +116,9 @@ def test_the_mpfr_reference_is_mpmaths_to_its_last_digits_and_falls_back_where_i
             a, b = f(*map(mp.mpf, p)), f_mp(*map(mp.mpf, p))
             assert abs(a - b) <= mp.mpf(10) ** -58 * abs(b), (p, a, b)
     assert run.fast_reference(sp.besselj(0, u), (u,), (0.5,))[2] == "mpmath"
+    big, _, _ = run.fast_reference((sp.exp(8 * u) - 1) / sp.exp(8 * u), (u,), (0.5,))     # beyond MPFR's exponents
+    with mp.workdps(50):
+        assert big(mp.mpf(1e8)) == 1 and big(mp.mpf(1e300)) == 1
 
 
 def test_the_error_in_ulp_from_the_split_truth_is_the_direct_one():
