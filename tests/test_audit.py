@@ -101,3 +101,35 @@ def test_an_argument_accepted_up_to_inf_is_read_and_sampled_there(few_points, mo
         assert math.inf in [p[0] for p in far] and min(p[0] for p in far) > 700.0
         rep = run.audit_one(job)
         assert (not run.over([rep])) == passes, rep
+
+
+def test_the_mpfr_reference_is_mpmaths_to_its_last_digits_and_falls_back_where_it_cannot():
+    """The MPFR form of a derived expression (π, a Piecewise, a rational) equals mpmath's at 60 digits;
+    a function MPFR lacks (besselj) gives mpmath's own form."""
+    import mpmath as mp
+    expr = sp.Piecewise((sp.tanh(u / 2) * K**2 / 3 + sp.pi, u < 1), (sp.sin(u) / u - K, True))
+    f_mp, _ = run.reference(expr, [u, K])
+    f, cond, engine = run.fast_reference(expr, (u, K), (0.5, 1.5))
+    assert engine == "mpfr"
+    with mp.workdps(60):
+        for p in ((0.25, -2.0), (3.0, 0.125), (1e-300, 3.0)):
+            a, b = f(*map(mp.mpf, p)), f_mp(*map(mp.mpf, p))
+            assert abs(a - b) <= mp.mpf(10) ** -58 * abs(b), (p, a, b)
+    assert run.fast_reference(sp.besselj(0, u), (u,), (0.5,))[2] == "mpmath"
+    big, _, _ = run.fast_reference((sp.exp(8 * u) - 1) / sp.exp(8 * u), (u,), (0.5,))     # beyond MPFR's exponents
+    with mp.workdps(50):
+        assert big(mp.mpf(1e8)) == 1 and big(mp.mpf(1e300)) == 1
+
+
+def test_the_error_in_ulp_from_the_split_truth_is_the_direct_one():
+    """|got − true|/ulp(true) from true = hi + lo in doubles equals the 64-bit mpmath difference, for an
+    error of a fraction of an ulp, several ulp, and a value far off; 0 and NaN keep their meaning."""
+    import mpmath as mp
+    with mp.workdps(50):
+        true = mp.mpf(1) / 3
+        for got in (1 / 3, math.nextafter(1 / 3, 1), 1 / 3 + 7 * math.ulp(1 / 3), 0.5, -1.0):
+            with mp.workprec(64):
+                direct = float(abs(mp.mpf(got) - true)) / math.ulp(float(true))
+            assert run.Judge.ulp(got, true) == pytest.approx(direct, rel=1e-15, abs=1e-300)
+        assert run.Judge.ulp(0.0, mp.mpf(0)) == 0.0 and run.Judge.ulp(1e-10, mp.mpf(0)) == math.inf
+        assert run.Judge.ulp(1.0, mp.nan) == math.inf and run.Judge.ulp(math.nan, true) == math.inf

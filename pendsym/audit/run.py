@@ -44,6 +44,7 @@ from typing import Callable, Sequence
 
 import mpmath as mp
 import sympy as sp
+from mpmath import libmp
 
 from .. import pipeline, schedule, stages
 from ..emit import kernels as kn
@@ -52,6 +53,7 @@ from ..emit.kernels.measure import reference
 from ..result import KernelArg
 from . import arrays as ar
 from . import points as pt
+from .reference import fast_reference
 
 LIMIT_AT = 1e-80         # the reference at 0 of an argument accepted down to 0: the form here
 POINTS = 20_000          # points per kernel, the search included
@@ -89,7 +91,8 @@ class Judge:
 
     def __init__(self, job: Job):
         self.job = job
-        self.f, self.cond = reference(job.expr, list(job.syms))
+        probe = tuple(math.sqrt(a.lo * a.hi) if a.log and a.lo > 0 else (a.lo + a.hi) / 2 for a in job.args)
+        self.f, self.cond, self.engine = fast_reference(job.expr, job.syms, probe)
 
     def truth(self, p: tuple, extra: int = 0):
         at = [v if v != 0 or not self.zero_limit(i) else LIMIT_AT for i, v in enumerate(p)]
@@ -143,17 +146,34 @@ class Judge:
 
     @staticmethod
     def ulp(got: float, true) -> float:
-        if not math.isfinite(got) or not mp.isfinite(true):
-            return math.inf
+        return Judge._ulp(got, Judge.split(true))
+
+    @staticmethod
+    def split(true) -> tuple | None:
+        """The true value as hi + lo in doubles (hi = true rounded, lo = the rest rounded; None where
+        true is not finite; (0, None) where it is 0), so that an error in ulp costs two double operations."""
+        if not mp.isfinite(true):
+            return None
         if true == 0:
+            return 0.0, None
+        hi = float(true)
+        return hi, libmp.to_float(libmp.mpf_sub(true._mpf_, libmp.from_float(hi), 0))  # (exact)
+
+    @staticmethod
+    def _ulp(got: float, parts: tuple | None) -> float:
+        """|got − true| / ulp(true): got − hi is exact where got is within a factor 2 of true (Sterbenz),
+        and the error is rounded once, to ~1e-16 of itself."""
+        if not math.isfinite(got) or parts is None:
+            return math.inf
+        hi, lo = parts
+        if lo is None:
             return 0.0 if abs(got) < 1e-300 else math.inf
-        with mp.workprec(64):               # the difference rounded to 64 bits: ample for an error in ulp
-            return float(abs(mp.mpf(got) - true)) / math.ulp(float(true))
+        return abs((got - hi) - lo) / math.ulp(hi)
 
     def errors(self, p: tuple, extra: int = 0) -> tuple[float, float]:
         """(Python ulp, C ulp) at p."""
-        true = self.truth(p, extra)
-        return self.ulp(self._call(self.job.py, p), true), self.ulp(self._call(self.job.c, p), true)
+        parts = self.split(self.truth(p, extra))
+        return self._ulp(self._call(self.job.py, p), parts), self._ulp(self._call(self.job.c, p), parts)
 
     def scaled(self, p: tuple, floor: float = -1.0, known: tuple | None = None) -> tuple[float, float, float, float, float]:
         """(Python ulp, C ulp, κ, Python scaled, C scaled); κ only where the error could beat `floor`
@@ -288,6 +308,7 @@ def audit_one(job: Job, points: int = POINTS) -> dict:
         _, _, seen = pt.climb(r[1], r[0], score, job.args, job.name, CLIMB_BUDGET // max(1, len(starts)))
         tried += len(seen)
     top = max(rows, key=lambda r: (r[0], -sum(r[1])))
+    check = reference_check(judge, top)
     fails_py = sum(1 for r in rows if r[5] > kn.BOUND)
     fails_c = sum(1 for r in rows if r[6] > kn.BOUND)
     worst_py = max(rows, key=lambda r: r[5])
@@ -305,8 +326,23 @@ def audit_one(job: Job, points: int = POINTS) -> dict:
         "domain_accepted": [list(d) for d in job.domain],
         "outside": outside(job, ctypes.get_errno),
         "numpy": ar.figures(job.py, judge, rows, kn.BOUND) if f"return _{job.name}_array(" in job.code else None,
+        "reference": check,
         "cpu_s": round(time.process_time() - start, 1),
     }
+
+
+CHECK_DIGITS = 20        # more digits of the mpmath reference that confirms the worst point
+
+
+def reference_check(judge: Judge, top: tuple) -> dict:
+    """The worst point's errors again against mpmath's own form (:func:`reference`) at CHECK_DIGITS more
+    digits: an independent evaluation of the reference, which must agree to 1e-6 ulp."""
+    again = Judge.__new__(Judge)
+    again.job, again.engine = judge.job, "mpmath"
+    again.f, again.cond = reference(judge.job.expr, list(judge.job.syms))
+    e_py, e_c = again.errors(top[1], CHECK_DIGITS)
+    agrees = all((a == b) or abs(a - b) <= 1e-6 * max(1.0, abs(b)) for a, b in ((e_py, top[2]), (e_c, top[3])))
+    return {"engine": judge.engine, "checked_with": f"mpmath, +{CHECK_DIGITS} digits", "agrees": agrees}
 
 
 # ----------------------------------------------------------------- the emitted code, loaded as a user would
@@ -435,7 +471,8 @@ def _numpy_cell(r: dict) -> str:
 def over(rows: Sequence[dict]) -> list[dict]:
     """The kernels over the bound in either language, or departing from the behaviour outside the domain."""
     return [r for r in rows if r["python"]["worst_scaled"] > kn.BOUND or r["c"]["worst_scaled"] > kn.BOUND
-            or r.get("outside") or (r.get("numpy") or {}).get("worst_scaled", 0.0) > kn.BOUND]
+            or r.get("outside") or (r.get("numpy") or {}).get("worst_scaled", 0.0) > kn.BOUND
+            or not r.get("reference", {}).get("agrees", True)]
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -470,5 +507,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"OVER THE BOUND {r['kernel']}: Python {r['python']['worst_scaled']:.3g} "
               f"({r['python']['over_bound']} points), C {r['c']['worst_scaled']:.3g} ({r['c']['over_bound']} points), "
               f"numpy {(r.get('numpy') or {}).get('worst_scaled', math.nan):.3g} "
-              f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else ""))
+              f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else "")
+              + ("" if r.get("reference", {}).get("agrees", True) else "; the mpmath check of the reference disagrees"))
     return 1 if bad else 0
