@@ -3,16 +3,13 @@
 The reference is chapter IV's limits u → ∞ of the derived forms, taken by SymPy and checked against the shot thread
 pendulum (ch4_thread: eq184.ends, eq184.F, eq185.I_J), not the kernels' far forms.  The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
 """
-import importlib.util
 import math
-import shutil
 
 import mpmath as mp
 import pytest
 import sympy as sp
 
 from pendsym import stages
-from pendsym.emit import kernels as kn
 from pendsym.emit.kernels.measure import reference
 
 # kernel: (number of arguments, the thread's Result, component (None: the whole form), the other arguments' values)
@@ -37,17 +34,11 @@ ARG_ORDER = {"eq159_v0": ("lambda", "u"), "eq159_w0": ("lambda", "u"), "eq159_wl
 
 
 @pytest.fixture(scope="module")
-def emitted(generated, tmp_path_factory):
-    spec = importlib.util.spec_from_file_location("ch4k_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    out = {name: {"Python": getattr(mod, name)} for name in THREAD if hasattr(mod, name)}
-    if shutil.which("cc"):
-        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
-        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch4k"))
-        for name in out:
-            out[name]["C"] = kn.c_callable(lib, name, THREAD[name][0])
-    return out
+def emitted(emitted_kernels):
+    """{name: {language: callable}} of the kernels of THREAD that are generated (conftest: imported and compiled
+    once); a missing one fails its test."""
+    haag = emitted_kernels("haag1935")
+    return {name: haag.functions(name, THREAD[name][0]) for name in THREAD if hasattr(haag.python, name)}
 
 
 @pytest.fixture(scope="module")
@@ -116,27 +107,17 @@ def test_K_and_n2_keep_their_declared_hi(emitted_all, name):
 
 
 @pytest.fixture(scope="module")
-def emitted_all(generated, tmp_path_factory):
-    spec = importlib.util.spec_from_file_location("ch4k2_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    out = {name: {"Python": getattr(mod, name)} for name in NOT_AT_INFINITY}
-    if shutil.which("cc"):
-        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
-        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch4k2"))
-        out["eq036_K_uniform"]["C"] = kn.c_callable(lib, "eq036_K_uniform", 4)
-        out["eq034_n2_z_uniform"]["C"] = kn.c_callable(lib, "eq034_n2_z_uniform", 5)
-    return out
+def emitted_all(emitted_kernels):
+    haag = emitted_kernels("haag1935")
+    return {"eq036_K_uniform": haag.functions("eq036_K_uniform", 4),
+            "eq034_n2_z_uniform": haag.functions("eq034_n2_z_uniform", 5)}
 
 
 @pytest.mark.parametrize("n", [2, 3, 4, 5])
-def test_Gamma_n_at_infinity_follows_184(generated, n):
+def test_Gamma_n_at_infinity_follows_184(emitted_kernels, n):
     """(184): n·u·Γ_n tends to the bracket B_n(K) of eq184.Gn (G_n = λ(u/λ)^{n−2}Γ_n (163)), with k = K(1 − K): the
     kernel at u = 1e300 times n·u is B_n to 1e-14, and at u = inf it is 0 (Γ_n → 0), in Python."""
-    spec = importlib.util.spec_from_file_location(f"ch4g{n}_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    fn = getattr(mod, f"eq166_Gamma{n}")
+    fn = getattr(emitted_kernels("haag1935").python, f"eq166_Gamma{n}")
     Gn = stages.results(["haag1935.eq184.Gn"])["haag1935.eq184.Gn"].derived
     by = {s.name: s for s in Gn.free_symbols}
     u, lam = by["u"], by["lambda"]
