@@ -29,9 +29,58 @@ from pendsym.emit import kernels as kn
 
 ROOT = Path(__file__).resolve().parents[1]
 
-# the costliest test files (seconds of one run, measured in session 10 on a warm cache), run first; every file not
-# listed follows in its usual (alphabetical) order.  A stale entry only costs balance, never a check.
-COSTLIEST_FIRST = ()
+# the costliest test files, run first (--dist loadfile hands whole files to the workers in this order): seconds of
+# the full tier and of the quick tier ("not slow") per file, from session 10's profile of make test on a warm cache
+# (pytest's per-test times on a loaded machine, scaled by that run's CPU/wall ratio, 0.089).  Every file not listed
+# follows in its usual (alphabetical) order.  A stale or missing entry costs balance only, never a check.
+COST = {
+    "tests/test_scene_fuzz.py": (97, 19),
+    "tests/test_nonlinear_blade.py": (78, 3),
+    "tests/test_scene_gravity_meter_rhombus.py": (56, 0),
+    "tests/test_solve_second_order.py": (55, 5),
+    "tests/test_scene.py": (54, 54),
+    "tests/test_perturbation.py": (38, 6),
+    "tests/test_solve_nonpolynomial.py": (31, 3),
+    "tests/test_solve_answer.py": (31, 1),
+    "tests/test_scene_instruments.py": (24, 24),
+    "tests/test_cli.py": (24, 15),
+    "tests/test_haag1935_ch2_kernels.py": (21, 2),
+    "tests/test_solve_drag.py": (21, 1),
+    "tests/test_solve_lindstedt.py": (19, 1),
+    "tests/test_solve_secular.py": (19, 0),
+    "tests/test_haag1935_figures.py": (19, 0),
+    "tests/test_haag1935_ch2_perturbations.py": (17, 17),
+    "tests/test_audit.py": (16, 5),
+    "tests/test_solve_variation.py": (16, 1),
+    "tests/test_suspension.py": (15, 15),
+    "tests/test_blade.py": (14, 5),
+    "tests/test_kernels.py": (13, 0),
+    "tests/test_haag1935_ch2_dissymmetry.py": (12, 12),
+    "tests/test_scene_gravity_meter.py": (12, 1),
+    "tests/test_haag1935_ch2_clamping.py": (9, 9),
+    "tests/test_haag1935_ch7_dissymmetry.py": (9, 2),
+    "tests/test_haag1935_ch7_clamping.py": (8, 6),
+    "tests/test_thread_pendulum.py": (8, 6),
+    "tests/test_codec.py": (8, 5),
+    "tests/test_haag1935_ch9_kernels.py": (8, 1),
+    "tests/test_finite_amplitude.py": (8, 0),
+    "tests/test_haag1935_ch8_inverted.py": (7, 7),
+    "tests/test_bench_blade.py": (7, 0),
+    "tests/test_haag1935_ch2_general.py": (6, 6),
+    "tests/test_haag1935_ch6_perturbations.py": (5, 5),
+    "tests/test_haag1935_ch9_series.py": (5, 5),
+    "tests/test_haag1935_ch9_rectangle.py": (4, 4),
+    "tests/test_kernels_stable.py": (4, 4),
+    "tests/test_plugin_memoir.py": (4, 4),
+    "tests/test_solve_parse.py": (3, 3),
+    "tests/test_scene_temperature.py": (3, 3),
+    "tests/test_haag1935_ch4_kernels.py": (3, 3),
+    "tests/test_haag1935_ch7_kernels.py": (3, 3),
+    "tests/test_haag1935_ch4_thread.py": (3, 2),
+    "tests/test_figure.py": (2, 2),
+    "tests/test_haag1935_ch3_derivation.py": (2, 2),
+    "tests/test_kernels_sharing.py": (2, 2),
+}
 
 
 @pytest.fixture(scope="session")
@@ -107,6 +156,7 @@ def emitted_kernels(generated, tmp_path_factory) -> Callable[[str], Emitted]:
 
 
 def pytest_collection_modifyitems(session, config, items):
-    """The costliest files first (a stable sort: within a file, and among the other files, the order is kept)."""
-    rank = {name: i for i, name in enumerate(COSTLIEST_FIRST)}
-    items.sort(key=lambda item: rank.get(item.nodeid.split("::", 1)[0], len(rank)))
+    """The costliest files of the tier first (a stable sort: within a file, and among the files of equal cost, the
+    order is kept; a file's tests stay together)."""
+    quick = "not slow" in (config.option.markexpr or "")
+    items.sort(key=lambda item: -COST.get(item.nodeid.split("::", 1)[0], (0, 0))[quick])
