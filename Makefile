@@ -24,14 +24,17 @@ derive: $(STAMP)
 
 # over the cores, a test file per worker (so that a module's fixtures are built once), under the
 # hash seed of make derive: the slow tests read the Results and evidence a derive computed (same
-# content keys) and compute only what is missing; the 15 slowest tests are listed
+# content keys) and compute only what is missing; the 15 slowest tests are listed.  The files go to the
+# workers in the order tests/conftest.py gives them, the costliest first (--no-loadscope-reorder: xdist would
+# otherwise hand out the files with the most tests first, and leave a long file with few tests to the end)
+PYTEST_XDIST := -n auto --dist loadfile --no-loadscope-reorder
 test: $(STAMP)
-	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto --dist loadfile --durations=15
+	PYTHONHASHSEED=0 $(BIN)/pytest -q $(PYTEST_XDIST) --durations=15
 
 # the quick tier (under 3 min on a cold cache): a test over ~2 s CPU goes to the slow tier, with a cheaper
 # sibling here; the 10 slowest tests are listed
 test-quick: $(STAMP)
-	PYTHONHASHSEED=0 $(BIN)/pytest -q -n auto --dist loadfile -m "not slow" --durations=10
+	PYTHONHASHSEED=0 $(BIN)/pytest -q $(PYTEST_XDIST) -m "not slow" --durations=10
 
 tex-tools:
 	@command -v latexmk >/dev/null 2>&1 && kpsewhich pgfplots.sty adjustbox.sty enumitem.sty xltabular.sty needspace.sty >/dev/null 2>&1 || \

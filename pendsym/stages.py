@@ -269,6 +269,14 @@ def assessed(result: Result, level: str = "full") -> tuple[tuple[str, str], obje
     return cache.memo(pl.key("assessed", result.id), functools.partial(pipeline.assessed, result, level))
 
 
+def kernel(result: Result, level: str = "full") -> kn.Kernel | None:
+    """The kernel of one Result, as ``make derive`` forms it: from the cache when these very emitters
+    formed it from these very forms before (:func:`kernel_key`), formed here otherwise (and stored only
+    under the string-hash seed a derive runs with, as :func:`results` does)."""
+    return cache.memo_fresh(kernel_key(result, plan_of(level).emitter), functools.partial(kn.kernel_of, result),
+                            os.environ.get("PYTHONHASHSEED") == "0")[0]
+
+
 def _sections(pl: Plan, ids: list[str]) -> str:
     """The sections the ids belong to, with their counts."""
     wanted = set(ids)

@@ -17,9 +17,7 @@ and, where e^{−u} is below 1e-40 (u ≥ 100), the memoir's printed thin-blade 
 generated/python imported, generated/c compiled at -O2.
 """
 import functools
-import importlib.util
 import math
-import shutil
 
 import mpmath as mp
 import pytest
@@ -27,7 +25,6 @@ import sympy as sp
 
 from derivations.haag1935.ch6_short_blade import truth_errors
 from pendsym import blade
-from pendsym.emit import kernels as kn
 
 BOUND = 4.0
 DPS = 30
@@ -97,18 +94,10 @@ def ulp_error(got, value) -> float:
 
 
 @pytest.fixture(scope="module")
-def emitted(generated, tmp_path_factory):
-    """{name: {language: callable}} of the six kernels as generated."""
-    spec = importlib.util.spec_from_file_location("ch2_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    out = {name: {"Python": getattr(mod, name)} for name in NAMES}
-    if shutil.which("cc"):
-        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
-        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch2"))
-        for name in NAMES:
-            out[name]["C"] = kn.c_callable(lib, name, 1)
-    return out
+def emitted(emitted_kernels):
+    """{name: {language: callable}} of the eight kernels as generated (conftest: imported and compiled once)."""
+    haag = emitted_kernels("haag1935")
+    return {name: haag.functions(name, 1) for name in NAMES}
 
 
 def test_the_reference_blade_is_the_uniform_blade():

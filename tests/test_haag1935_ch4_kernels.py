@@ -4,9 +4,7 @@ The reference is chapter IV's limits u → ∞ of the derived forms, taken by Sy
 pendulum (ch4_thread: eq184.ends, eq184.F, eq185.I_J; K and n² of the direct blade: the thread's (193) with z' the
 negative root of its (30), and (192)), not the kernels' far forms.  The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
 """
-import importlib.util
 import math
-import shutil
 import sys
 
 import mpmath as mp
@@ -14,7 +12,6 @@ import pytest
 import sympy as sp
 
 from pendsym import stages
-from pendsym.emit import kernels as kn
 from pendsym.emit.kernels.measure import reference
 
 # kernel: (number of arguments, the thread's Result, component (None: the whole form), the other arguments' values)
@@ -42,17 +39,11 @@ ARG_ORDER = {"eq159_v0": ("lambda", "u"), "eq159_w0": ("lambda", "u"), "eq159_wl
 
 
 @pytest.fixture(scope="module")
-def emitted(generated, tmp_path_factory):
-    spec = importlib.util.spec_from_file_location("ch4k_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    out = {name: {"Python": getattr(mod, name)} for name in THREAD if hasattr(mod, name)}
-    if shutil.which("cc"):
-        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
-        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch4k"))
-        for name in out:
-            out[name]["C"] = kn.c_callable(lib, name, THREAD[name][0])
-    return out
+def emitted(emitted_kernels):
+    """{name: {language: callable}} of the kernels of THREAD that are generated (conftest: imported and compiled
+    once); a missing one fails its test."""
+    haag = emitted_kernels("haag1935")
+    return {name: haag.functions(name, THREAD[name][0]) for name in THREAD if hasattr(haag.python, name)}
 
 
 @pytest.fixture(scope="module")
@@ -178,13 +169,10 @@ def test_K_and_n2_nan_and_minus_inf_stay_domain_errors(emitted, name):
 
 
 @pytest.mark.parametrize("n", [2, 3, 4, 5])
-def test_Gamma_n_at_infinity_follows_184(generated, n):
+def test_Gamma_n_at_infinity_follows_184(emitted_kernels, n):
     """(184): n·u·Γ_n tends to the bracket B_n(K) of eq184.Gn (G_n = λ(u/λ)^{n−2}Γ_n (163)), with k = K(1 − K): the
     kernel at u = 1e300 times n·u is B_n to 1e-14, and at u = inf it is 0 (Γ_n → 0), in Python."""
-    spec = importlib.util.spec_from_file_location(f"ch4g{n}_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    fn = getattr(mod, f"eq166_Gamma{n}")
+    fn = getattr(emitted_kernels("haag1935").python, f"eq166_Gamma{n}")
     Gn = stages.results(["haag1935.eq184.Gn"])["haag1935.eq184.Gn"].derived
     by = {s.name: s for s in Gn.free_symbols}
     u, lam = by["u"], by["lambda"]

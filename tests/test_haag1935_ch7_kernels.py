@@ -6,14 +6,11 @@ verified below), G2 = ∫_0^λ w²/M ds (79) by mpmath quadrature, G = G2/(ελ)
 C = (wλ − F4)/G2 (284) with F4 = ∫_0^λ w'^4 ds (282).  κ = Σ|x_i ∂f/∂x_i|/|f| by central differences of
 the same quadratures.  The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
 """
-import importlib.util
 import math
-import shutil
 
 import mpmath as mp
 import pytest
 
-from pendsym.emit import kernels as kn
 
 BOUND = 4.0
 DPS = 40
@@ -66,18 +63,10 @@ def ulp_error(got, value) -> float:
 
 
 @pytest.fixture(scope="module")
-def emitted(generated, tmp_path_factory):
-    """{name: {language: callable}} of the two kernels as generated."""
-    spec = importlib.util.spec_from_file_location("ch7_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    out = {name: {"Python": getattr(mod, name)} for name in ("eq263_G", "eq285_C")}
-    if shutil.which("cc"):
-        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
-        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch7"))
-        out["eq263_G"]["C"] = kn.c_callable(lib, "eq263_G", 2)
-        out["eq285_C"]["C"] = kn.c_callable(lib, "eq285_C", 1)
-    return out
+def emitted(emitted_kernels):
+    """{name: {language: callable}} of the two kernels as generated (conftest: imported and compiled once)."""
+    haag = emitted_kernels("haag1935")
+    return {"eq263_G": haag.functions("eq263_G", 2), "eq285_C": haag.functions("eq285_C", 1)}
 
 
 def test_the_reference_blade_solves_the_blade_equation():

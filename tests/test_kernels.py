@@ -35,31 +35,21 @@ def kernel_table(generated):
 
 
 @pytest.fixture(scope="module")
-def clib(generated, tmp_path_factory):
-    """One shared library per memoir (plus the AGM swing time)."""
+def clib(emitted_kernels):
+    """One shared library per memoir (plus the AGM swing time), compiled once per session (conftest)."""
     if not shutil.which("cc"):
         pytest.skip("no C compiler")
-    libs = {}
-    for memoir in MEMOIRS:
-        src = (generated / "c" / f"{memoir}.c").read_text().replace(f'#include "{memoir}.h"', "")
-        src += (generated / "c" / "pendulum.c").read_text().replace('#include "pendulum.h"', "")
-        libs[memoir] = kn.compile_c(src, tmp_path_factory.mktemp(memoir))
-    return libs
+    return {memoir: emitted_kernels(memoir).c for memoir in MEMOIRS}
 
 
 @pytest.fixture(scope="module")
-def pymod(generated):
-    mods = {}
-    for memoir in MEMOIRS:
-        spec = importlib.util.spec_from_file_location(memoir, generated / "python" / f"{memoir}.py")
-        mods[memoir] = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(mods[memoir])
-    return mods
+def pymod(emitted_kernels):
+    return {memoir: emitted_kernels(memoir).python for memoir in MEMOIRS}
 
 
 def _fn(lib, name, n):
     import ctypes
-    f = getattr(lib, name)
+    f = lib[name]          # a pointer of this module's own (the library is shared by the session)
     f.restype, f.argtypes = ctypes.c_double, [ctypes.c_double] * n
     return f
 

@@ -6,14 +6,10 @@ with 100 digits more than the cancellation needs (8 per decade the smallest argu
 κ = Σ|x_i ∂f/∂x_i|/|f| is taken from the same definition by central differences.  The kernels are the
 emitted ones: generated/python imported, generated/c compiled at -O2.
 """
-import importlib.util
 import math
-import shutil
 
 import mpmath as mp
 import pytest
-
-from pendsym.emit import kernels as kn
 
 BOUND = 4.0
 EXTRA_DIGITS = 100    # the differences of κ (step 1e-40) keep 60 digits
@@ -101,29 +97,10 @@ def reference(f, p) -> tuple:
         return value, float(kappa / abs(value))
 
 
-@pytest.fixture(scope="module")
-def emitted(generated, tmp_path_factory):
-    """{memoir: (Python module, C library or None)} of the generated kernels."""
-    out = {}
-    for memoir in {m for m, _, _ in CASES.values()}:
-        spec = importlib.util.spec_from_file_location(f"issue11_{memoir}", generated / "python" / f"{memoir}.py")
-        mod = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(mod)
-        lib = None
-        if shutil.which("cc"):
-            src = (generated / "c" / f"{memoir}.c").read_text().replace(f'#include "{memoir}.h"', "")
-            lib = kn.compile_c(src, tmp_path_factory.mktemp(memoir))
-        out[memoir] = (mod, lib)
-    return out
-
-
 @pytest.mark.parametrize("name", sorted(CASES))
-def test_the_kernels_over_the_bound_in_session_6_hold_it_at_their_old_worst_points(emitted, name):
+def test_the_kernels_over_the_bound_in_session_6_hold_it_at_their_old_worst_points(emitted_kernels, name):
     memoir, f, points = CASES[name]
-    mod, lib = emitted[memoir]
-    fns = {"Python": getattr(mod, name)}
-    if lib is not None:
-        fns["C"] = kn.c_callable(lib, name, len(points[0]))
+    fns = emitted_kernels(memoir).functions(name, len(points[0]))    # conftest: built once per session
     for p in points:
         value, kappa = reference(f, p)
         for lang, fn in fns.items():
