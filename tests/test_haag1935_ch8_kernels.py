@@ -13,10 +13,8 @@ References, never the forms under test:
   C = (wλ − F4)/G2 (284).
 The kernels are the emitted ones: generated/python imported, generated/c compiled at -O2.
 """
-import importlib.util
 import math
 import re
-import shutil
 
 import mpmath as mp
 import pytest
@@ -25,7 +23,6 @@ import sympy as sp
 from derivations.haag1935.ch7_gravity import truth as gravity_truth
 from derivations.haag1935.ch8_inverted import kernels as ch8_kernels
 from derivations.haag1935.ch8_inverted.table_kernels import node_mode
-from pendsym.emit import kernels as kn
 from pendsym.emit.kernels.measure import reference
 
 BOUND = 4.0
@@ -35,18 +32,10 @@ NAMES = {"eq034_n2_inverted_eps": 5, "eq314_G": 2, "eq317_C": 1, "eq036_K_invert
 
 
 @pytest.fixture(scope="module")
-def emitted(generated, tmp_path_factory):
-    """{name: {language: callable}} of the five kernels as generated."""
-    spec = importlib.util.spec_from_file_location("ch8_haag1935", generated / "python" / "haag1935.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    out = {name: {"Python": getattr(mod, name)} for name in NAMES}
-    if shutil.which("cc"):
-        src = (generated / "c" / "haag1935.c").read_text().replace('#include "haag1935.h"', "")
-        lib = kn.compile_c(src, tmp_path_factory.mktemp("haag1935_ch8"))
-        for name, n in NAMES.items():
-            out[name]["C"] = kn.c_callable(lib, name, n)
-    return out
+def emitted(emitted_kernels):
+    """{name: {language: callable}} of the five kernels as generated (conftest: imported and compiled once a run)."""
+    haag = emitted_kernels("haag1935")
+    return {name: haag.functions(name, n) for name, n in NAMES.items()}
 
 
 @pytest.fixture(scope="module")
