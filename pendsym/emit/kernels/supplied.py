@@ -78,7 +78,9 @@ class BesselCross(Helper):
 
     * x_0 ≥ 25: Hankel's asymptotic expansion, J_n = √(2/(πx))(P cos χ − Q sin χ), Y_n = √(2/(πx))(P sin χ +
       Q cos χ), χ = x − (2n + 1)π/4 (Abramowitz–Stegun 9.2.5–9.2.10; 19 terms hold 1e-22 at x = 25): the
-      cross product is (PP' + QQ') sin Δ + (QP' − PQ') cos Δ with Δ = −h − (a − b)π/2, no cancellation;
+      cross product is (PP' + QQ') sin Δ + (QP' − PQ') cos Δ with Δ = −h − (a − b)π/2, no cancellation, summed
+      as sin Δ + [(PP' − 1 + QQ') sin Δ + (QP' − PQ') cos Δ] (P − 1 and Q are O(1/x)), so that its error is
+      libm's sin or cos of h and little more;
     * h ≤ x_0/2: the Taylor series in h of c(x) = Y_a(x_0)J_b(x) − J_a(x_0)Y_b(x), a solution of Bessel's
       equation of order b, from c(x_0), c'(x_0) (a Wronskian, 2/(πx_0)) by the recurrence of its coefficients
       about x_0 (radius x_0: the series converges as 2^−m at least), until two terms fall below 1e-18;
@@ -122,35 +124,102 @@ static double pendsym_quotient_low(double a, double b, double hi)
 {
     return fma(-b, hi, a) / b;
 }"""
-    cross = f"""/* Hankel's P_n(x), and Q_n(x) through *q (A–S 9.2.9–9.2.10, {HANKEL_TERMS} terms, x >= {HANKEL_FROM:g}). */
+    cross = f"""/* Hankel's P_n(x) − 1, and Q_n(x) through *q (A–S 9.2.9–9.2.10, {HANKEL_TERMS} terms, x >= {HANKEL_FROM:g}). */
 static double pendsym_hankel_pq(int n, double x, double *q)
 {{
     const double t = 1.0/(x*x);
     if (n == 0) {{
         *q = ({_horner(q0, "t")})/x;
-        return {_horner(p0, "t")};
+        return ({_horner(p0[1:], "t")})*t;
     }}
     *q = ({_horner(q1, "t")})/x;
-    return {_horner(p1, "t")};
+    return ({_horner(p1[1:], "t")})*t;
 }}
 
-/* Σ f_m h^m for f solving Bessel's equation of order n about x0, from f_0 = f0, f_1 = f1 (terms t_m = f_m h^m). */
-static double pendsym_bessel_taylor(int n, double x0, double h, double f0, double f1)
+/* Double-double arithmetic (hi, lo): sums by two-sum, products by fma (Dekker, Knuth). */
+static void pendsym_dd_add(double ah, double al, double bh, double bl, double *rh, double *rl)
 {{
-    double t[4] = {{0.0, 0.0, f0, f1*h}};      /* t_(m-2), t_(m-1), t_m, t_(m+1) */
-    double s = f0 + f1*h, next;
+    const double s = ah + bh, bb = s - ah;
+    const double e = ((ah - (s - bb)) + (bh - bb)) + (al + bl);
+    *rh = s + e;
+    *rl = e - (*rh - s);
+}}
+
+static void pendsym_dd_mul(double ah, double al, double bh, double bl, double *rh, double *rl)
+{{
+    const double p = ah*bh;
+    const double e = fma(ah, bh, -p) + (ah*bl + al*bh);
+    *rh = p + e;
+    *rl = e - (*rh - p);
+}}
+
+static void pendsym_dd_div(double ah, double al, double bh, double bl, double *rh, double *rl)
+{{
+    const double q1 = ah/bh;
+    double ph, pl, dh, dl;
+    pendsym_dd_mul(q1, 0.0, bh, bl, &ph, &pl);
+    pendsym_dd_add(ah, al, -ph, -pl, &dh, &dl);
+    pendsym_dd_add(q1, 0.0, dh/bh, 0.0, rh, rl);
+}}
+
+/* c(x0 + h)/W(x0), W = 2/(πx): c = Y_a(x0)J_b(x) − J_a(x0)Y_b(x) solves Bessel's equation of order b in x, from
+ * c(x0)/W = 0 or ∓1 and c'(x0)/W; its Taylor series in h by the recurrence of the coefficients about x0, in
+ * double-double (terms t_m = f_m h^m), times √(x1/x0) (double-double), rounded once. */
+static double pendsym_bessel_taylor(int a, int b, double x0, double h)
+{{
+    double th[4] = {{0.0, 0.0, 0.0, 0.0}}, tl[4] = {{0.0, 0.0, 0.0, 0.0}};   /* t_(m-2), t_(m-1), t_m, t_(m+1) */
+    double h2, h2l, h3, h3l, h4, h4l, x2, x2l, sh, sl, nh, nl, ph, pl, dh, dl, fh, fl;
     int m, small = 0;
+    th[2] = a == b ? 0.0 : (a == 1 ? -1.0 : 1.0);
+    if (a == b) th[3] = -h;
+    else if (a == 0) pendsym_dd_div(-h, 0.0, x0, 0.0, &th[3], &tl[3]);
+    pendsym_dd_mul(h, 0.0, h, 0.0, &h2, &h2l);
+    pendsym_dd_mul(h2, h2l, h, 0.0, &h3, &h3l);
+    pendsym_dd_mul(h3, h3l, h, 0.0, &h4, &h4l);
+    pendsym_dd_mul(x0, 0.0, x0, 0.0, &x2, &x2l);
+    pendsym_dd_add(th[2], tl[2], th[3], tl[3], &sh, &sl);
     for (m = 0; m < 400 && small < 2; m++) {{
-        if (n == 0)
-            next = -((m + 1.0)*(m + 1.0)*t[3]*h + x0*t[2]*h*h + t[1]*h*h*h)/(x0*(m + 2.0)*(m + 1.0));
-        else
-            next = -(x0*(m + 1.0)*(2.0*m + 1.0)*t[3]*h + (m*(double)m + x0*x0 - 1.0)*t[2]*h*h + 2.0*x0*t[1]*h*h*h
-                     + t[0]*h*h*h*h)/(x0*x0*(m + 2.0)*(m + 1.0));
-        s += next;
-        small = fabs(next) <= 1e-18*fabs(s) ? small + 1 : 0;
-        t[0] = t[1]; t[1] = t[2]; t[2] = t[3]; t[3] = next;
+        const double k = (m + 2.0)*(m + 1.0);
+        if (b == 0) {{
+            pendsym_dd_mul(th[3], tl[3], (m + 1.0)*(m + 1.0), 0.0, &nh, &nl);
+            pendsym_dd_mul(nh, nl, h, 0.0, &nh, &nl);
+            pendsym_dd_mul(th[2], tl[2], x0, 0.0, &ph, &pl);
+            pendsym_dd_mul(ph, pl, h2, h2l, &ph, &pl);
+            pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
+            pendsym_dd_mul(th[1], tl[1], h3, h3l, &ph, &pl);
+            pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
+            pendsym_dd_mul(x0, 0.0, k, 0.0, &dh, &dl);
+        }} else {{
+            pendsym_dd_mul(x0, 0.0, (m + 1.0)*(2.0*m + 1.0), 0.0, &ph, &pl);
+            pendsym_dd_mul(ph, pl, h, 0.0, &ph, &pl);
+            pendsym_dd_mul(th[3], tl[3], ph, pl, &nh, &nl);
+            pendsym_dd_add(x2, x2l, m*(double)m - 1.0, 0.0, &ph, &pl);
+            pendsym_dd_mul(ph, pl, h2, h2l, &ph, &pl);
+            pendsym_dd_mul(th[2], tl[2], ph, pl, &ph, &pl);
+            pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
+            pendsym_dd_mul(th[1], tl[1], 2.0*x0, 0.0, &ph, &pl);
+            pendsym_dd_mul(ph, pl, h3, h3l, &ph, &pl);
+            pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
+            pendsym_dd_mul(th[0], tl[0], h4, h4l, &ph, &pl);
+            pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
+            pendsym_dd_mul(x2, x2l, k, 0.0, &dh, &dl);
+        }}
+        pendsym_dd_div(-nh, -nl, dh, dl, &nh, &nl);
+        pendsym_dd_add(sh, sl, nh, nl, &sh, &sl);
+        small = fabs(nh) <= 1e-20*fabs(sh) ? small + 1 : 0;
+        th[0] = th[1]; th[1] = th[2]; th[2] = th[3]; th[3] = nh;
+        tl[0] = tl[1]; tl[1] = tl[2]; tl[2] = tl[3]; tl[3] = nl;
     }}
-    return s;
+    pendsym_dd_div(h, 0.0, x0, 0.0, &fh, &fl);                  /* √(1 + h/x0) = √(x1/x0) */
+    pendsym_dd_add(1.0, 0.0, fh, fl, &fh, &fl);
+    {{
+        const double r = sqrt(fh);
+        pendsym_dd_mul(r, 0.0, r, 0.0, &ph, &pl);
+        pendsym_dd_add(fh, fl, -ph, -pl, &ph, &pl);
+        pendsym_dd_add(r, 0.0, ph/(2.0*r), 0.0, &fh, &fl);
+    }}
+    pendsym_dd_mul(sh, sl, fh, fl, &sh, &sl);
+    return sh;
 }}
 
 /* Y_a(x0)J_b(x1) − J_a(x0)Y_b(x1) times π√(x0 x1)/2, x0 = x0 + l0 (double-double), x1 = x0 + h. */
@@ -159,15 +228,13 @@ static double pendsym_bessel_cross(double a, double b, double x0, double l0, dou
     const int ia = (int)a, ib = (int)b;
     if (x0 >= {HANKEL_FROM!r}) {{
         double qa, qb, pa, pb, s = sin(h), c = cos(h), sd, cd;
-        pa = pendsym_hankel_pq(ia, x0, &qa);
+        pa = pendsym_hankel_pq(ia, x0, &qa);              /* P − 1: the sum below is sin or cos Δ plus small terms */
         pb = pendsym_hankel_pq(ib, x0 + h, &qb);
         if (ia == ib) {{ sd = -s; cd = c; }} else if (ia == 1) {{ sd = -c; cd = -s; }} else {{ sd = c; cd = s; }}
-        return (pa*pb + qa*qb)*sd + (qa*pb - pa*qb)*cd;
+        return sd + ((pa + pb + pa*pb + qa*qb)*sd + ((qa - qb) + (qa*pb - pa*qb))*cd);
     }}
     if (h <= {TAYLOR_RATIO!r}*x0) {{
-        const double f0 = ia == ib ? 0.0 : (ia == 1 ? -1.0 : 1.0);
-        const double f1 = ia == ib ? -1.0 : (ia == 1 ? 0.0 : -1.0/x0);
-        return pendsym_bessel_taylor(ib, x0, h, f0, f1)*sqrt(1.0 + h/x0);
+        return pendsym_bessel_taylor(ia, ib, x0, h);
     }}
     {{
         double x1 = x0 + h, bb = x1 - x0, l1 = ((x0 - (x1 - bb)) + (h - bb)) + l0;
@@ -201,30 +268,79 @@ def _pendsym_quotient_low(a, b, hi):
     e = ((bh * hh - p) + bh * hl + bl * hh) + bl * hl
     return ((a - p) - e) / b'''
     cross = f'''def _pendsym_hankel_pq(n, x):
-    """Hankel's (P_n(x), Q_n(x)) (A–S 9.2.9–9.2.10, {HANKEL_TERMS} terms, x >= {HANKEL_FROM:g})."""
+    """Hankel's (P_n(x) − 1, Q_n(x)) (A–S 9.2.9–9.2.10, {HANKEL_TERMS} terms, x >= {HANKEL_FROM:g})."""
     t = 1.0 / (x * x)
     if n == 0:
-        return {_horner(p0, "t")}, ({_horner(q0, "t")}) / x
-    return {_horner(p1, "t")}, ({_horner(q1, "t")}) / x
+        return ({_horner(p0[1:], "t")}) * t, ({_horner(q0, "t")}) / x
+    return ({_horner(p1[1:], "t")}) * t, ({_horner(q1, "t")}) / x
 
 
-def _pendsym_bessel_taylor(n, x0, h, f0, f1):
-    """Σ f_m h^m for f solving Bessel's equation of order n about x0, from f_0 = f0, f_1 = f1."""
-    t = [0.0, 0.0, f0, f1 * h]
-    s = f0 + f1 * h
+def _pendsym_two_prod(a, b):
+    """a·b = p + e exactly (Dekker)."""
+    p = a * b
+    ah, al = _pendsym_split(a)
+    bh, bl = _pendsym_split(b)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _pendsym_dd_add(ah, al, bh, bl):
+    s = ah + bh
+    bb = s - ah
+    e = ((ah - (s - bb)) + (bh - bb)) + (al + bl)
+    r = s + e
+    return r, e - (r - s)
+
+
+def _pendsym_dd_mul(ah, al, bh, bl):
+    p, e = _pendsym_two_prod(ah, bh)
+    e += ah * bl + al * bh
+    r = p + e
+    return r, e - (r - p)
+
+
+def _pendsym_dd_div(ah, al, bh, bl):
+    q1 = ah / bh
+    ph, pl = _pendsym_dd_mul(q1, 0.0, bh, bl)
+    dh, dl = _pendsym_dd_add(ah, al, -ph, -pl)
+    return _pendsym_dd_add(q1, 0.0, dh / bh, 0.0)
+
+
+def _pendsym_bessel_taylor(a, b, x0, h):
+    """c(x0 + h)/W(x0) times √(x1/x0) for c = Y_a(x0)J_b(x) − J_a(x0)Y_b(x) (W = 2/(πx)): the Taylor series of
+    Bessel's equation of order b about x0, in double-double, rounded once."""
+    t = [(0.0, 0.0), (0.0, 0.0), (0.0 if a == b else (-1.0 if a == 1 else 1.0), 0.0),
+         (-h, 0.0) if a == b else ((0.0, 0.0) if a == 1 else _pendsym_dd_div(-h, 0.0, x0, 0.0))]
+    h2 = _pendsym_dd_mul(h, 0.0, h, 0.0)
+    h3 = _pendsym_dd_mul(*h2, h, 0.0)
+    h4 = _pendsym_dd_mul(*h3, h, 0.0)
+    x2 = _pendsym_dd_mul(x0, 0.0, x0, 0.0)
+    s = _pendsym_dd_add(*t[2], *t[3])
     small = 0
     m = 0
     while m < 400 and small < 2:
-        if n == 0:
-            nxt = -((m + 1.0) * (m + 1.0) * t[3] * h + x0 * t[2] * h * h + t[1] * h * h * h) / (x0 * (m + 2.0) * (m + 1.0))
+        k = (m + 2.0) * (m + 1.0)
+        if b == 0:
+            n = _pendsym_dd_mul(*_pendsym_dd_mul(*t[3], (m + 1.0) * (m + 1.0), 0.0), h, 0.0)
+            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*_pendsym_dd_mul(*t[2], x0, 0.0), *h2))
+            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*t[1], *h3))
+            d = _pendsym_dd_mul(x0, 0.0, k, 0.0)
         else:
-            nxt = -(x0 * (m + 1.0) * (2.0 * m + 1.0) * t[3] * h + (m * float(m) + x0 * x0 - 1.0) * t[2] * h * h
-                    + 2.0 * x0 * t[1] * h * h * h + t[0] * h * h * h * h) / (x0 * x0 * (m + 2.0) * (m + 1.0))
-        s += nxt
-        small = small + 1 if abs(nxt) <= 1e-18 * abs(s) else 0
+            n = _pendsym_dd_mul(*t[3], *_pendsym_dd_mul(*_pendsym_dd_mul(x0, 0.0, (m + 1.0) * (2.0 * m + 1.0), 0.0), h, 0.0))
+            p = _pendsym_dd_mul(*_pendsym_dd_add(*x2, m * float(m) - 1.0, 0.0), *h2)
+            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*t[2], *p))
+            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*_pendsym_dd_mul(*t[1], 2.0 * x0, 0.0), *h3))
+            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*t[0], *h4))
+            d = _pendsym_dd_mul(*x2, k, 0.0)
+        nxt = _pendsym_dd_div(-n[0], -n[1], *d)
+        s = _pendsym_dd_add(*s, *nxt)
+        small = small + 1 if abs(nxt[0]) <= 1e-20 * abs(s[0]) else 0
         t = [t[1], t[2], t[3], nxt]
         m += 1
-    return s
+    f = _pendsym_dd_add(1.0, 0.0, *_pendsym_dd_div(h, 0.0, x0, 0.0))
+    r = math.sqrt(f[0])
+    e = _pendsym_dd_add(*f, *(-v for v in _pendsym_two_prod(r, r)))
+    f = _pendsym_dd_add(r, 0.0, e[0] / (2.0 * r), 0.0)
+    return _pendsym_dd_mul(*s, *f)[0]
 
 
 def _pendsym_bessel_cross(a, b, x0, l0, h):
@@ -235,11 +351,9 @@ def _pendsym_bessel_cross(a, b, x0, l0, h):
         pb, qb = _pendsym_hankel_pq(ib, x0 + h)
         s, c = math.sin(h), math.cos(h)
         sd, cd = (-s, c) if ia == ib else ((-c, -s) if ia == 1 else (c, s))
-        return (pa * pb + qa * qb) * sd + (qa * pb - pa * qb) * cd
+        return sd + ((pa + pb + pa * pb + qa * qb) * sd + ((qa - qb) + (qa * pb - pa * qb)) * cd)
     if h <= {TAYLOR_RATIO!r} * x0:
-        f0 = 0.0 if ia == ib else (-1.0 if ia == 1 else 1.0)
-        f1 = -1.0 if ia == ib else (0.0 if ia == 1 else -1.0 / x0)
-        return _pendsym_bessel_taylor(ib, x0, h, f0, f1) * math.sqrt(1.0 + h / x0)
+        return _pendsym_bessel_taylor(ia, ib, x0, h)
     from scipy.special import jv, yv
     x1 = x0 + h
     bb = x1 - x0
