@@ -26,7 +26,7 @@ import math
 
 import sympy as sp
 
-from pendsym.emit.kernels.supplied import BesselCross, QuotientLow, SuppliedKernelSpec
+from pendsym.emit.kernels.supplied import BesselCross, QuotientLow, RootQuotient, SuppliedKernelSpec
 from pendsym.result import KernelArg
 
 from ..symbols import lam, omega, u
@@ -76,8 +76,8 @@ def supplied(name: str) -> sp.Expr:
     gap = kernel_forms.end_gap()
     if sp.simplify(gap - u / (1 + sp.sqrt(q / 2 + 1))) != 0:
         raise ValueError(f"the gap {gap} is not u/(1 + √(1 + q/2))")
-    gap = u / (1 + sp.sqrt(q / 2 + 1))             # as printed: q/2 exact, one root, one sum, one quotient
-    cross = {ab: BesselCross(ab[0], ab[1], x0, low, gap) for ab in ((1, 0), (0, 0), (1, 1), (0, 1))}
+    gap, gap_low = RootQuotient(u, q / 2, 0), RootQuotient(u, q / 2, 1)    # u/(1 + √(1 + q/2)), double-double
+    cross = {ab: BesselCross(ab[0], ab[1], x0, low, gap, gap_low) for ab in ((1, 0), (0, 0), (1, 1), (0, 1))}
     D, Dp, D1, D1p = derivation.D_symbols()
     root = sp.sqrt(derivation.x0 * derivation.x1)
     as_cross = {D: cross[(1, 0)] / root, Dp: cross[(0, 0)] / root, D1: cross[(1, 1)] / root, D1p: cross[(0, 1)] / root}
