@@ -3,8 +3,8 @@
 References come from the memoir's definitions, not from the form under test: the blade shot by
 :mod:`pendsym.blade` (M v'' + v = 0 with |M| = M0(1 + k|s|), no Bessel function), the series in k derived from the
 ODE (:mod:`derivations.haag1935.ch9_holes.rhombus_series`), and mpmath's Bessel functions at 40–60 digits.
-No kernel is emitted yet (see :mod:`derivations.haag1935.ch9_holes.kernel_forms`): these tests hold the facts a
-kernel will stand on.
+The kernels of v_0, w_0, w_λ (:mod:`derivations.haag1935.ch9_holes.kernels`, supplied forms) are tested at the end,
+as the engine prints them, with their helpers.
 """
 from __future__ import annotations
 

@@ -6,7 +6,8 @@
   hole, where the Bessel forms lose digits;
 * the rectangular hole, n°104–106: :mod:`.rectangle_derivation` (SymPy, trigonometric pieces),
   :mod:`.rectangle_printed`, :mod:`.rectangle_truth` (the blade shot), :mod:`.rectangle_table`;
-* :mod:`.limits`: the blade without a hole, the limit of both.
+* :mod:`.limits`: the blade without a hole, the limit of both;
+* :mod:`.rhombus_table_kernels`, :mod:`.kernels`: v_0/λ, w_0/λ, w_λ/λ in u = ωλ, q = kλ with supplied kernel forms.
 
 Findings (the truth is the blade shot by :mod:`pendsym.blade`, no Bessel function involved):
 

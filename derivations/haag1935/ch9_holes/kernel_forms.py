@@ -1,8 +1,7 @@
 """Haag 1935, chapter IX, n°107–110: the rhombus blade's v_0, w_0, w_λ and G_2 toward kernels (issue #14).
 
-**Not a kernel yet.**  Nothing here is emitted: this module holds the forms and the measured diagnosis a kernel
-will be built on (the engine cannot emit a Bessel function or a double-double argument today; see the
-"Bessel functions" section of docs/kernel-accuracy.md).
+The forms and the measured diagnosis the kernels of :mod:`.kernels` (session 10, supplied forms) are built on;
+nothing here is emitted (see the "Bessel functions" section of docs/kernel-accuracy.md).
 
 * :func:`scaled`: the derived (343) and (346) divided by λ, as functions of two dimensionless arguments,
   u = ωλ (as in chapter III) and q = kλ (so M at the ends is M_0(1 + q/2)).  The memoir's forms depend on
