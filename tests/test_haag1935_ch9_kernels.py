@@ -266,6 +266,7 @@ CROSS_POINTS = [(1.7, 1e-8), (0.05, 1e-8), (3.1, 3e-4), (2.29, 3.45e-6), (1.0, 0
                 (1.0, 0.08000000000000002), (0.3, 0.5), (2.69, 2.438), (3.14, 2.5), (1.3, 1.57)]
 
 
+@pytest.mark.slow
 def test_bessel_cross_holds_an_ulp_by_hankel_and_taylor(helpers):
     """The cross products Y_a(x_0)J_b(x_1) − J_a(x_0)Y_b(x_1) (times π√(x_0x_1)/2) within 1.25 ulp of mpmath at
     50 digits (measured ≤ 0.97 by Hankel's expansion, ≤ 0.57 by the double-double Taylor series), at x_0 = 2u/q
