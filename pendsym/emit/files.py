@@ -11,6 +11,7 @@ from typing import Sequence
 
 from ..io import content_hash
 from . import kernels as kn
+from .kernels import supplied
 from .kernels.arrays import numpy_definition
 from .layout import ENV
 
@@ -36,7 +37,8 @@ def _definitions(ks: Sequence[kn.Kernel], lang: str, docs: bool) -> list[str]:
     parts always carry theirs)."""
     doc = {k.name: k.docstring() for k in ks} if docs else {}
     emit = numpy_definition if lang == "py" else functools.partial(kn.definition, lang=lang)   # Python: numpy arrays too
-    return [emit(f, doc=kn.part_doc(f) if f.callers else doc.get(f.name, "")) for f in _functions(ks)]
+    return [*supplied.helper_definitions([k.expr for k in ks], lang),     # helpers of supplied forms, once
+            *[emit(f, doc=kn.part_doc(f) if f.callers else doc.get(f.name, "")) for f in _functions(ks)]]
 
 
 def python_module(memoir: str, ks: Sequence[kn.Kernel]) -> str:
@@ -46,7 +48,7 @@ def python_module(memoir: str, ks: Sequence[kn.Kernel]) -> str:
 
 def c_source(memoir: str, ks: Sequence[kn.Kernel]) -> str:
     return render("kernels.c.j2", memoir=memoir, sources=_sources(ks), functions=_definitions(ks, "c", docs=False),
-                  contract=kn.CONTRACT)
+                  contract=kn.CONTRACT, preamble=supplied.c_preamble([k.expr for k in ks]))
 
 
 def c_header(memoir: str, ks: Sequence[kn.Kernel]) -> str:

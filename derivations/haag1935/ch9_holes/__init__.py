@@ -6,7 +6,8 @@
   hole, where the Bessel forms lose digits;
 * the rectangular hole, n°104–106: :mod:`.rectangle_derivation` (SymPy, trigonometric pieces),
   :mod:`.rectangle_printed`, :mod:`.rectangle_truth` (the blade shot), :mod:`.rectangle_table`;
-* :mod:`.limits`: the blade without a hole, the limit of both.
+* :mod:`.limits`: the blade without a hole, the limit of both;
+* :mod:`.rhombus_table_kernels`, :mod:`.kernels`: v_0/λ, w_0/λ, w_λ/λ in u = ωλ, q = kλ with supplied kernel forms.
 
 Findings (the truth is the blade shot by :mod:`pendsym.blade`, no Bessel function involved):
 
@@ -22,7 +23,7 @@ from __future__ import annotations
 from types import ModuleType
 
 from . import rectangle_table, rhombus_table_ends, rhombus_table_functions, rhombus_table_small
-from . import rhombus_table_scene
+from . import rhombus_table_kernels, rhombus_table_scene
 
 SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (rectangle_table, "Chapter IX. The rectangular hole (321)–(333) and the stability remark of n°106"),
@@ -30,6 +31,7 @@ SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (rhombus_table_ends, "Chapter IX. The rhombus hole: end values, (345) and G_2 (343)–(346)"),
     (rhombus_table_small, "Chapter IX. The rhombus hole for a small hole: series in k (not in the memoir)"),
     (rhombus_table_scene, "Chapter IX. The rhombus hole in a gravity meter: β1, a1, n², G, C (not in the memoir)"),
+    (rhombus_table_kernels, "Chapter IX. The rhombus hole's end values in u = ωλ, q = kλ, with their kernels"),
 )
 
 

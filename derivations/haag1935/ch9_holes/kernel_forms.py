@@ -1,8 +1,7 @@
 """Haag 1935, chapter IX, n°107–110: the rhombus blade's v_0, w_0, w_λ and G_2 toward kernels (issue #14).
 
-**Not a kernel yet.**  Nothing here is emitted: this module holds the forms and the measured diagnosis a kernel
-will be built on (the engine cannot emit a Bessel function or a double-double argument today; see the
-"Bessel functions" section of docs/kernel-accuracy.md).
+The forms and the measured diagnosis the kernels of :mod:`.kernels` (session 10, supplied forms) are built on;
+nothing here is emitted (see the "Bessel functions" section of docs/kernel-accuracy.md).
 
 * :func:`scaled`: the derived (343) and (346) divided by λ, as functions of two dimensionless arguments,
   u = ωλ (as in chapter III) and q = kλ (so M at the ends is M_0(1 + q/2)).  The memoir's forms depend on
@@ -61,8 +60,14 @@ def derived(name: str) -> sp.Expr:
 def scaled(name: str) -> sp.Expr:
     """v_0/λ, w_0/λ, w_λ/λ (343) or G_2/λ (346) as functions of u = ωλ and q = kλ (x_0, x_1 by (334)); an error if
     the quotient still depends on λ."""
+    return scaled_from(derived(name), name)
+
+
+def scaled_from(form: sp.Expr, name: str = "form") -> sp.Expr:
+    """A derived (343) or (346) in ω, k, x_0, x_1, divided by λ, in u = ωλ and q = kλ (x_0, x_1 by (334)); an
+    error if the quotient still depends on λ."""
     ends = derivation.x_ends()
-    expr = derived(name).subs(ends).subs({omega: u / lam, derivation.k: q / lam}) / lam
+    expr = form.subs(ends).subs({omega: u / lam, derivation.k: q / lam}) / lam
     expr = expr.xreplace({a: sp.simplify(a) for a in expr.atoms(sp.besselj, sp.bessely)})
     at = {u: sp.Rational(17, 10), q: sp.Rational(1, 10)}
     values = [sp.N(expr.subs(at).subs(lam, length), 30) for length in (sp.Rational(1, 3), 7)]

@@ -38,6 +38,7 @@ from sympy.printing.precedence import precedence
 
 from .plan import If, Select, body
 from .printing import INDENT, Function, _bound, definition
+from .supplied import Helper
 
 _TOP = "_shape"
 
@@ -241,6 +242,13 @@ def array_function(f: Function) -> str:
         else:
             lines.append(f"{INDENT}{', '.join(params)} = numpy.broadcast_arrays({arrays})")
         lines += array_guard(f)
+    if f.expr.atoms(Helper):
+        # a supplied form's helpers (double-double, Bessel cross products) are scalar code: the
+        # elements go through the scalar path one by one (a Python loop, said in the docstring)
+        lines[1] = (f'{INDENT}"""{f.name} on numpy arrays: the scalar path on each element (its helpers are scalar; '
+                    f'a Python loop over the elements)."""')
+        lines.append(f"{INDENT}return numpy.vectorize({f.name}, otypes=[float])({', '.join(params)})")
+        return "\n".join(lines) + "\n"
     lines.append(f"{INDENT}{_TOP} = {params[0]}.shape")
     level = _Level(_TOP, {}, set(f.params), frozenset(f.params))
     lines += _statements(body(f.expr), level, 1, itertools.count(), p)

@@ -86,6 +86,9 @@ def kernel_of(result: Result) -> Kernel | None:
     spec = result.spec
     if spec.kernel is None or not closed_form(result.derived):
         return None
+    if getattr(spec.kernel, "form", None) is not None:      # a form the derivation supplies (.supplied)
+        from .supplied import supplied_kernel
+        return supplied_kernel(result)
     args = _arguments(result)
     name = kernel_name(result.id)
     choice = choose_form(result.derived, args, name)

@@ -1,0 +1,49 @@
+"""Haag 1935, chapter IX, n°109: v_0/λ, w_0/λ, w_λ/λ of the rhombus blade in u = ωλ, q = kλ, with their kernels.
+
+Each Result is the derived (343) with x_0, x_1 of (334), ω = u/λ, k = q/λ, divided by λ (:func:`.kernel_forms.scaled_from`:
+an error if λ remains); checked against the inverted blade shot at (M0, k, λ), no Bessel function
+(:mod:`.rhombus_truth`), at u = λ/√M0, q = kλ.  The kernels' supplied forms: :mod:`.kernels`.
+"""
+from __future__ import annotations
+
+import mpmath as mp
+
+from pendsym import checks
+from pendsym.result import Spec
+
+from ..common import TOL, rid, src
+from ..symbols import u
+from . import kernel_forms, kernels, rhombus_truth as truth
+
+NAMES = {"v0": ("v_0", "v0"), "w0": ("w_0", "w0"), "wl": (r"w_\lambda", "wl")}
+
+
+def on_shot_blade(name: str) -> checks.Values:
+    """name/λ at (u, q) = (λ/√M0, kλ) against the shot blade's end value over λ."""
+    quantity = truth.QUANTITIES[name]
+
+    def points(level: str, dps: int):
+        for case in truth.CASES[level]:
+            sol = truth.shot(*case, dps)
+            env = truth.environment(*case)
+            with mp.workdps(dps + 10):
+                at = {u.name: env["lambda"] * env["omega"], kernel_forms.q.name: env["k"] * env["lambda"]}
+                yield checks.Point(f"(M0, k, λ) = ({', '.join(case)})", at, quantity(sol) / env["lambda"])
+
+    def confirm(dps: int):
+        case = truth.CASES["quick"][0]
+        return {f"{name} at {case}": quantity(truth.shot(*case, dps))}
+
+    return checks.Values(truth=f"{name}/λ of the {truth.BLADE}; {truth.WHERE}", points=points, confirm=confirm,
+                         tol=TOL, kind="quadrature")
+
+
+def specs() -> tuple[Spec, ...]:
+    return tuple(
+        Spec(rid(343, f"{name}_u_q"), f"{NAMES[name][0]}/λ of the rhombus blade in u = ωλ, q = kλ",
+             src("n°109 (343) in u = ωλ, q = kλ", None), NAMES[name][0] + r"/\lambda",
+             lambda deps, name=name: kernel_forms.scaled_from(deps[rid(343, name)].derived, name),
+             deps=(rid(343, name),), check=on_shot_blade(name), kernel=kernels.kernel(name),
+             note="(343) over λ with x_0 = 2u/q, x_1 = (u/q)√(2q + 4) ((334), λ = 1): each end value is λ times a "
+                  "function of u and q, the two arguments of its kernel.")
+        for name in ("v0", "w0", "wl"))
