@@ -16,6 +16,7 @@ from ..symbols import u
 from . import kernel_forms, kernels, rhombus_truth as truth
 
 NAMES = {"v0": ("v_0", "v0"), "w0": ("w_0", "w0"), "wl": (r"w_\lambda", "wl")}
+TITLES = {"v0": "v_0", "w0": "w_0", "wl": "w_λ"}        # (plain text: a title is not TeX)
 
 
 def on_shot_blade(name: str) -> checks.Values:
@@ -40,7 +41,7 @@ def on_shot_blade(name: str) -> checks.Values:
 
 def specs() -> tuple[Spec, ...]:
     return tuple(
-        Spec(rid(343, f"{name}_u_q"), f"{NAMES[name][0]}/λ of the rhombus blade in u = ωλ, q = kλ",
+        Spec(rid(343, f"{name}_u_q"), f"{TITLES[name]}/λ of the rhombus blade in u = ωλ, q = kλ",
              src("n°109 (343) in u = ωλ, q = kλ", None), NAMES[name][0] + r"/\lambda",
              lambda deps, name=name: kernel_forms.scaled_from(deps[rid(343, name)].derived, name),
              deps=(rid(343, name),), check=on_shot_blade(name), kernel=kernels.kernel(name),
