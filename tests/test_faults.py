@@ -38,12 +38,19 @@ def alive(pid: int) -> bool:
     return state != "Z"
 
 
+def as_from_a_terminal() -> None:
+    """In the child before exec: SIGINT's default disposition, as a shell on a terminal gives a command.
+    A job started in the background by a non-interactive shell (``cmd &``, as CI may run the suite)
+    inherits SIGINT ignored, and a Python started so never raises KeyboardInterrupt."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def start_slow_derive(tmp_path, root) -> subprocess.Popen:
     env = dict(os.environ, PENDSYM_MEMOIR_PACKAGES="toy_memoirs", PYTHONPATH=str(root / "tests"),
                PENDSYM_CACHE=str(tmp_path / "cache"), PENDSYM_WORKERS="2", TOY_SLOW_SECONDS="30")
     proc = subprocess.Popen([sys.executable, "-m", "pendsym.cli", "derive", "--out", str(tmp_path / "out")],
                             env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            start_new_session=True)
+                            start_new_session=True, preexec_fn=as_from_a_terminal)
     deadline = time.monotonic() + 60
     while len(children(proc.pid)) < 2:               # the two check workers are running
         assert time.monotonic() < deadline and proc.poll() is None, "no workers started"
