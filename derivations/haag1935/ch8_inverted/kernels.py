@@ -80,11 +80,11 @@ def _scaled_quadratic() -> tuple[sp.Expr, sp.Expr]:
 
 
 def _stable_parts():
-    """(n², K) of the slow vibration in D = a − vλ > 0 and P, with S = P + √(P² + 4R²D²) written without
-    cancellation: P + Q for P ≥ 0, 4R²D²/(Q − P) otherwise (Q² − P² = 4R²D², checked).
+    """(n², S, stable S): n² of the slow vibration in D = a − vλ > 0 and P, rational in S = P + √(P² + 4R²D²),
+    and S written without cancellation: P + Q for P ≥ 0, 4R²D²/(Q − P) otherwise (Q² − P² = 4R²D², checked).
 
     From (34) n² = −Kg/z' with g → −g (n°100), z' = −R²/z (31), K = (a + wλ)/(a + z − vλ) (36) and z the
-    positive root (Q − P)/(2D) of Dz² + Pz − R²D: z = 2R²D/S, so n² and K are rational in S."""
+    positive root (Q − P)/(2D) of Dz² + Pz − R²D: z = 2R²D/S.  (K itself is formed apart, :func:`K_eps`.)"""
     Q = sp.sqrt(NUM**2 + 4 * R**2 * DIST**2)
     roots = list(sp.roots(sp.Poly(DIST * z**2 + NUM * z - R**2 * DIST, z)))
     plus = next(r for r in roots if sp.simplify(r - (Q - NUM) / (2 * DIST)) == 0)     # positive for D > 0
@@ -97,20 +97,18 @@ def _stable_parts():
     K_36 = ch1_model.K_of_z().subs(z, z_of_S)
     n2 = (-K * g / zp).subs(g, -g).subs(zp, -R**2 / z).subs(K, K_36).subs(z, z_of_S)
     n2 = sp.factor(sp.simplify(n2.subs(a, DIST + vl)))
-    K_form = sp.factor(sp.simplify(K_36.subs(a, DIST + vl)))
     stable_S = sp.Piecewise((NUM + Q, NUM >= 0), (4 * R**2 * DIST**2 / (Q - NUM), True))
-    return n2, K_form, S, stable_S
+    return n2, S, stable_S
 
 
 AREA = sp.Symbol("A_w", real=True)            # a + wλ, which (312) makes −ελ
 DENOM = sp.Symbol("T", positive=True)          # 2R² + S
 
 
-def _in_eps(expr: sp.Expr, S: sp.Symbol, stable_S: sp.Expr, deps) -> sp.Expr:
-    """expr (in D, P, S, a, vλ, wλ) in D, β1, A = a + wλ and Q = √(P² + 4R²D²): P = D² + β1A − R² (SymPy from
-    (30)'s coefficient), 2R² + S = (R² + D² + β1A) + Q, a sum of positive terms in the window (β1 < 0 (304),
-    A < 0 (305)), S stable; then D, β1, A of the rotated ends (159), u → iu (n°101), and a = a1 − ελ ((312),
-    a1 of (310)): A = −ελ."""
+def _at_eps(deps) -> tuple[dict, dict, sp.Expr, sp.Expr, sp.Expr]:
+    """(ends, at, P, c, b) of the inverted uniform blade at a = a1 − ελ: the rotated ends v_λ, β1, w_λ
+    (159), u → iu (n°101); a = a1 − ελ ((312), a1 of (310)); D = a − vλ and P of (30)'s scaled quadratic,
+    P = D² + β1(a + wλ) − R² (checked); D = λ(c − ε) with c = 1/(u sin u) free of ε (checked); b = β1/λ."""
     ends = {name: derivation.rotated(deps[rid(159, str_name)].derived)
             for name, str_name in ((vl, "vl"), (beta1, "beta1"), (wl, "wl"))}
     at = {a: deps[rid(310, "a1")].derived - eps * lam}
@@ -118,17 +116,25 @@ def _in_eps(expr: sp.Expr, S: sp.Symbol, stable_S: sp.Expr, deps) -> sp.Expr:
     P_in = sp.expand(P_value.subs(a, DIST + vl).subs(wl, AREA - DIST - vl))
     if sp.expand(P_in - (DIST**2 + beta1 * AREA - R**2)) != 0:
         raise ValueError(f"P is not D² + β1(a + wλ) − R²: {P_in}")
+    D_at = D_value.subs(ends).subs(at)
+    c = sp.simplify(sp.expand((D_at + eps * lam) / lam).rewrite(sp.sin))      # 1/(u sin u): no tan(u/2) + cot u
+    if c.has(eps) or sp.simplify((D_at - lam * (c - eps)).rewrite(sp.sin)) != 0:
+        raise ValueError(f"D = {D_at} is not λ(c(u) − ε)")
+    return ends, at, P_in, c, sp.simplify(ends[beta1] / lam)
+
+
+def _in_eps(expr: sp.Expr, S: sp.Symbol, stable_S: sp.Expr, deps) -> sp.Expr:
+    """expr (in D, P, S, a, vλ, wλ) in D, β1, A = a + wλ and Q = √(P² + 4R²D²): P = D² + β1A − R² (SymPy from
+    (30)'s coefficient), 2R² + S = (R² + D² + β1A) + Q, a sum of positive terms in the window (β1 < 0 (304),
+    A < 0 (305)), S stable; then D, β1, A of the rotated ends (159), u → iu (n°101), and a = a1 − ελ ((312),
+    a1 of (310)): A = −ελ."""
+    ends, at, P_in, c, b = _at_eps(deps)
     T_value = sp.expand(2 * R**2 + P_in) + sp.sqrt(P_in**2 + 4 * R**2 * DIST**2)
     expr = expr.subs(a, DIST + vl).xreplace({DIST + vl + wl: AREA, 2 * R**2 + S: DENOM})
     if expr.has(wl) or (expr.has(S) and expr.has(DENOM) is False):
         raise ValueError(f"a + wλ or 2R² + S is not a factor of {expr}")
     # D = λ(c − ε) and β1 = λb, c and b functions of u alone: the kernel's leaves, so that no expansion of D²
     # in ε cancels (D is small where ε nears 1/(u sin u))
-    D_at = D_value.subs(ends).subs(at)
-    c = sp.simplify(sp.expand((D_at + eps * lam) / lam).rewrite(sp.sin))      # 1/(u sin u): no tan(u/2) + cot u
-    if c.has(eps) or sp.simplify((D_at - lam * (c - eps)).rewrite(sp.sin)) != 0:
-        raise ValueError(f"D = {D_at} is not λ(c(u) − ε)")
-    b = sp.simplify(ends[beta1] / lam)
     values = {DIST: lam * (c - eps), beta1: lam * b, AREA: sp.simplify((a + wl).subs(ends).subs(at))}
     return expr.subs({DENOM: T_value, S: stable_S.subs(NUM, P_in)}).subs(values)
 
@@ -136,7 +142,7 @@ def _in_eps(expr: sp.Expr, S: sp.Symbol, stable_S: sp.Expr, deps) -> sp.Expr:
 def n2_eps(deps) -> sp.Expr:
     """n² of the inverted uniform blade at a = a1 − ελ: (34), (36), (30) as ``eq034.n2_inverted`` combines
     them (g → −g, z' = −R²/z), the root z = 2R²D/S of the scaled quadratic (:func:`_stable_parts`)."""
-    n2, _K, S, stable_S = _stable_parts()
+    n2, S, stable_S = _stable_parts()
     return _in_eps(n2, S, stable_S, deps)
 
 
@@ -177,21 +183,10 @@ def K_eps(deps) -> sp.Expr:
     Not the form of :func:`n2_eps` (K = −ελS/(D(2R² + S))): the kernel engine split that one into a polynomial in
     ε, R, λ with leaves in u that cancel (make audit 5.02 scaled); here every sum is of terms of one sign except
     d = c − ε (c ≥ 0.5495 > 2ε) and p (whose error is small beside q where p nears 0)."""
-    ends = {name: derivation.rotated(deps[rid(159, str_name)].derived)
-            for name, str_name in ((vl, "vl"), (beta1, "beta1"), (wl, "wl"))}
-    at = {a: deps[rid(310, "a1")].derived - eps * lam}
+    ends, at, P_in, c, b = _at_eps(deps)                               # b = β1/λ = 1 − 2 tan(u/2)/u
     A_value = sp.simplify((a + wl).subs(ends).subs(at))
     if sp.simplify(A_value + eps * lam) != 0:
         raise ValueError(f"a + wλ = {A_value} is not −ελ at a = a1 − ελ")
-    D_value, P_value = _scaled_quadratic()
-    P_in = sp.expand(P_value.subs(a, DIST + vl).subs(wl, AREA - DIST - vl))
-    if sp.expand(P_in - (DIST**2 + beta1 * AREA - R**2)) != 0:
-        raise ValueError(f"P is not D² + β1(a + wλ) − R²: {P_in}")
-    D_at = D_value.subs(ends).subs(at)
-    c = sp.simplify(sp.expand((D_at + eps * lam) / lam).rewrite(sp.sin))      # 1/(u sin u)
-    if c.has(eps) or sp.simplify((D_at - lam * (c - eps)).rewrite(sp.sin)) != 0:
-        raise ValueError(f"D = {D_at} is not λ(c(u) − ε)")
-    b = sp.simplify(ends[beta1] / lam)                                         # β1/λ = 1 − 2 tan(u/2)/u
     d_value = c - eps
     p_value = sp.expand(P_in / lam**2).subs({DIST: lam * d_value, beta1: lam * b, AREA: -eps * lam, R: lam * RATIO})
     p_value = sp.expand(p_value).collect(eps)
