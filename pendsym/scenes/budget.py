@@ -24,7 +24,7 @@ from sympy.printing.pycode import MpmathPrinter
 from .. import registry, verify
 from ..result import Result
 from ..scene import SceneError
-from . import index, schema
+from . import index, program, schema
 from .effects import Coefficient, Effect, Instrument, coefficients, effects, pending
 
 SECONDS_PER_DAY = 86400.0
@@ -171,8 +171,20 @@ def derived_forms(ids: list[str]) -> tuple[dict[str, sp.Basic], int, int]:
     return values, closure_size, len(entries)
 
 
-def _value(expr: sp.Expr, values: dict[str, float], rid: str) -> float:
-    """The derived form at this scene, at 30 digits."""
+def programs(ids: list[str]) -> tuple[dict[str, program.Program | sp.Basic], int, int]:
+    """({id: the numeric program of its derived form (:mod:`pendsym.scenes.program`), or the SymPy form when the
+    compiler does not support it}, the size of the ids' closure, how many Results the memoirs hold): from the cache
+    (``pendsym derive`` stores the programs of every Result a scene effect names), or compiled here from the forms
+    (:func:`derived_forms`) and stored."""
+    entries = index.entries()
+    return index.programs(ids, entries), len(index.closure(ids, entries)), len(entries)
+
+
+def _value(expr: program.Program | sp.Expr, values: dict[str, float], rid: str) -> float:
+    """The derived form at this scene: its program at GUARD digits, rounded to 30 (a form the compiler does not
+    support: SymPy's evaluation at 30 digits)."""
+    if isinstance(expr, program.Program):
+        return _run(expr, values, rid)
     subs = {}
     for sym in expr.free_symbols:
         if sym.name not in values:
@@ -250,8 +262,45 @@ def _values(eff: Effect | Coefficient, inst: Instrument, built: dict[str, sp.Bas
     return values
 
 
-def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> float:
-    """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p (symbolic derivatives, 30 digits)."""
+def _inputs(prog: program.Program, values: dict[str, float], rid: str) -> list[mp.mpf]:
+    """The program's inputs (call it at GUARD digits: mpf rounds to the precision in force)."""
+    missing = [n for n in prog.names if n not in values]
+    if missing:
+        raise SceneError(f"{rid} needs the symbol {missing[0]}, which the memoir's scene mapping does not give")
+    # the decimal the scene's number reads as (its shortest repr), at 30 digits, as the SymPy path substitutes it
+    return [mp.mpf(sp.Float(repr(float(values[n])), 30)) for n in prog.names]
+
+
+def _at(prog: program.Program, args: list[mp.mpf], rid: str):
+    """The program at ``args`` (in the order of its names), at the precision in force."""
+    try:
+        return program.run(prog, dict(zip(prog.names, args)))
+    except (ZeroDivisionError, ValueError, OverflowError) as exc:
+        raise SceneError(f"{rid} has no finite real value for this scene ({exc})") from None
+
+
+def _run(prog: program.Program, values: dict[str, float], rid: str) -> float:
+    """The program at this scene at GUARD digits, rounded to 30 digits, then to a double."""
+    with mp.workdps(GUARD):
+        val = _at(prog, _inputs(prog, values, rid), rid)
+        if isinstance(val, mp.mpc):
+            if val.imag != 0:
+                raise SceneError(f"{rid} has no finite real value for this scene")
+            val = val.real
+    val = sp.Float(val, 30)
+    if not val.is_finite:
+        raise SceneError(f"{rid} has no finite real value for this scene")
+    out = float(val)
+    if not math.isfinite(out):
+        raise SceneError(f"{rid} = {val} for this scene: not a finite double")
+    return out
+
+
+def _log_slope(expr: program.Program | sp.Expr, values: dict[str, float], exponents, rid: str) -> float:
+    """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p: a program's by mpmath's ``diff`` at
+    GUARD digits (:func:`_log_slope_of_program`); a SymPy form's by symbolic derivatives at 30 digits."""
+    if isinstance(expr, program.Program):
+        return _log_slope_of_program(expr, values, exponents, rid)
     if expr.has(*SLOW_FOR_EVALF):
         return _log_slope_by_mpmath(expr, values, exponents)
     out, base = 0.0, None
@@ -273,6 +322,17 @@ def _log_slope_by_mpmath(expr: sp.Expr, values: dict[str, float], exponents) -> 
 
         def log_at(t):
             return mp.log(f(*[b * mp.exp(p * t) for b, p in zip(base, powers)]))
+        return float(mp.diff(log_at, 0))
+
+
+def _log_slope_of_program(prog: program.Program, values: dict[str, float], exponents, rid: str) -> float:
+    """d log(expr)/d log g: the derivative in t of log expr(s e^{p_s t}) at t = 0 (``mp.diff``, GUARD digits)."""
+    with mp.workdps(GUARD):
+        base = _inputs(prog, values, rid)
+        powers = [mp.mpf(exponents.get(n, 0)) for n in prog.names]
+
+        def log_at(t):
+            return mp.log(_at(prog, [b * mp.exp(p * t) for b, p in zip(base, powers)], rid))
         return float(mp.diff(log_at, 0))
 
 
@@ -301,7 +361,7 @@ def solve(sc: schema.Scene) -> Budget:
     try:
         ids = [e.result for e in kept] + [u for e in kept for u in e.uses] + [c.result for c in coefs] + \
             [u for c in coefs for u in c.uses]
-        built, closure_size, total = derived_forms(ids) if ids else ({}, 0, len(index.entries()))
+        built, closure_size, total = programs(ids) if ids else ({}, 0, len(index.entries()))
     except registry.UnknownResult as exc:
         raise SceneError(f"a memoir's scene effect names {exc}") from None
     share = tol / (4 * max(1, len(kept)))

@@ -9,8 +9,10 @@ only to derive a form the cache does not hold (a cold cache), and then only the 
 """
 from __future__ import annotations
 
+import hashlib
 import importlib
 from dataclasses import dataclass
+from pathlib import Path
 from graphlib import TopologicalSorter
 from typing import Iterable, Mapping
 
@@ -18,6 +20,7 @@ import sympy as sp
 
 from .. import cache, keys, registry
 from ..result import Result, Spec
+from . import program
 
 FORMAT = "2"          # bump when the meaning of an entry changes
 
@@ -35,6 +38,15 @@ class Entry:
 def index_key(pkgs: tuple[str, ...]) -> str:
     """The key of the index of the memoirs in ``pkgs``: every source file (no memoir imported)."""
     return keys.digest(("scene index", FORMAT, keys.tree_key(pkgs)))
+
+
+def program_key(entry: Entry) -> str:
+    """The key of a Result's numeric program (:mod:`pendsym.scenes.program`): its forms' key, and the source of the
+    compiler (a change to it compiles again)."""
+    return keys.digest(("scene program", FORMAT, _PROGRAM_SOURCE, entry.key))
+
+
+_PROGRAM_SOURCE = hashlib.sha256(Path(program.__file__).read_bytes()).hexdigest()
 
 
 def defs_key(entry: Entry) -> str:
@@ -56,8 +68,9 @@ def compute(pkgs: tuple[str, ...]) -> dict[str, Entry]:
 
 
 def remember(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
-    """The index and the definitions of every Result that has some, stored (``pendsym derive`` calls it, with the
-    memoirs already imported, so that the scenes that follow import none)."""
+    """The index, the definitions of every Result that has some, and the numeric programs of the Results the
+    memoirs' scene effects name, stored (``pendsym derive`` calls it, with the memoirs already imported, so that the
+    scenes that follow import none and print no form)."""
     pkgs = registry.packages() if pkgs is None else pkgs
     found = entries(pkgs)
     missing = [rid for rid, entry in found.items() if entry.has_defs and cache.load(defs_key(entry)) is cache.MISSING]
@@ -65,6 +78,9 @@ def remember(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
         specs = registry.all_specs(registry.discover(pkgs))
         for rid in missing:
             cache.store(defs_key(found[rid]), specs[rid].defs)
+    from .effects import discover, discover_coefficients
+    named = {rid for e in (*discover(pkgs), *discover_coefficients(pkgs)) for rid in (e.result, *e.uses)}
+    programs(sorted(named & set(found)), found)
     return found
 
 
@@ -147,3 +163,32 @@ def derived_values(ids: Iterable[str], index: Mapping[str, Entry]) -> tuple[dict
         given = defs(rid, index)
         out[rid] = forms[rid].subs(dict(given), simultaneous=True) if given else forms[rid]
     return out, size
+
+
+def programs(ids: Iterable[str], index: Mapping[str, Entry]) -> dict[str, "program.Program | sp.Basic"]:
+    """{id: the numeric program of its derived form under its definitions}, from the cache, or compiled from the form
+    (:func:`derived_values`) and stored; a form the compiler does not support is given as the SymPy form itself (and
+    ``None`` is stored for it, so that it is not compiled again)."""
+    ids = list(dict.fromkeys(ids))
+    out: dict[str, program.Program | sp.Basic] = {}
+    unsupported = []
+    for rid in ids:
+        got = cache.load(program_key(index[rid]))
+        if got is None:
+            unsupported.append(rid)
+        elif got is not cache.MISSING:
+            out[rid] = got
+    missing = [rid for rid in ids if rid not in out]
+    if missing:
+        forms, _ = derived_values(missing, index)
+        for rid in missing:
+            if rid in unsupported:
+                out[rid] = forms[rid]
+                continue
+            try:
+                compiled = program.compile(forms[rid])
+            except program.Unsupported:
+                compiled = None
+            cache.store(program_key(index[rid]), compiled)
+            out[rid] = forms[rid] if compiled is None else compiled
+    return out
