@@ -56,8 +56,7 @@ RELATIONS = {"StrictGreaterThan": "gt", "GreaterThan": "ge", "StrictLessThan": "
 
 def compile(expr: sp.Basic) -> Program:
     """The program of ``expr`` (:class:`Unsupported` if a node has no operation)."""
-    names = tuple(sorted(s.name for s in expr.free_symbols))
-    slot = {n: i for i, n in enumerate(names)}
+    names: set[str] = set()          # the free symbols, found by the walk (free_symbols unfolds the tree)
     code: list[tuple] = []
     bound: list[bool] = []
     index: dict[tuple, int] = {}
@@ -81,7 +80,8 @@ def compile(expr: sp.Basic) -> Program:
         if e.is_Symbol:
             if e in variables:
                 return emit(("var", e.name), True)
-            return emit(("in", slot[e.name]), False)
+            names.add(e.name)
+            return emit(("in", e.name), False)
         if e.is_Integer:
             return emit(("int", int(e)), False)
         if e.is_Rational:
@@ -125,13 +125,13 @@ def compile(expr: sp.Basic) -> Program:
     root = walk(expr, frozenset())
     if root != len(code) - 1:                 # the value is the node emitted last (after its arguments)
         raise Unsupported("the form's value is not its last node")
-    return Program(names, tuple(code), tuple(bound))
+    return Program(tuple(sorted(names)), tuple(code), tuple(bound))
 
 
 def run(prog: Program, inputs: dict[str, mp.mpf]):
     """The value of the program at ``inputs`` (by name), by mpmath at the precision in force (mpf or mpc)."""
     code, bound = prog.code, prog.bound
-    given = [inputs[n] for n in prog.names]
+    given = {n: inputs[n] for n in prog.names}
     outer: dict[int, object] = {}
 
     def ev(k: int, env: dict, local: dict):
@@ -141,6 +141,8 @@ def run(prog: Program, inputs: dict[str, mp.mpf]):
         op = code[k]
         kind = op[0]
         if kind == "in":
+            if op[1] not in given:
+                raise Unsupported(f"input {op[1]!r} is not among the program's names")
             v = given[op[1]]
         elif kind == "var":
             v = env[op[1]]
