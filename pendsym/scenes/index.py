@@ -22,7 +22,7 @@ from .. import cache, keys, registry
 from ..result import Result, Spec
 from . import program
 
-FORMAT = "2"          # bump when the meaning of an entry changes
+FORMAT = "3"          # bump when the meaning of an entry changes
 
 
 @dataclass(frozen=True)
@@ -33,6 +33,8 @@ class Entry:
     deps: tuple[str, ...]
     key: str                                       # the cache key of its (derived, printed) forms
     has_defs: bool                                 # whether its Spec has definitions (stored apart: :func:`defs`)
+    title: str = ""                                # its Spec's title
+    ranges: tuple[tuple[str, float, float], ...] = ()   # its kernel's declared ranges (name, lo, hi), if any
 
 
 def index_key(pkgs: tuple[str, ...]) -> str:
@@ -63,8 +65,13 @@ def compute(pkgs: tuple[str, ...]) -> dict[str, Entry]:
     order = registry.closure(list(specs), specs)
     section = {s.id: sec.module for m in found.values() for sec in m.sections for s in sec.specs}
     ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, ("pendsym", *pkgs))
-    return {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), bool(specs[rid].defs))
-            for rid in order}
+    return {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), bool(specs[rid].defs),
+                       specs[rid].title, _ranges(specs[rid])) for rid in order}
+
+
+def _ranges(spec: Spec) -> tuple[tuple[str, float, float], ...]:
+    """The kernel's declared ranges of its arguments (the id-list scene refuses a value outside them)."""
+    return tuple((a.name, float(a.lo), float(a.hi)) for a in spec.kernel.args) if spec.kernel else ()
 
 
 def remember(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
