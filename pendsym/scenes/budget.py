@@ -3,8 +3,9 @@
 1. Select every declared effect that applies to the instrument (:mod:`pendsym.scenes.effects`).
 2. Estimate each from the memoir's printed statement; drop the smallest while their sum stays
    within half the tolerance (a dropped effect's Result is never built).
-3. Build only the closure of the kept effects' Results (:func:`pendsym.registry.build`) and
-   evaluate each derived form at 30 digits.
+3. Build only the closure of the kept effects' Results (:mod:`pendsym.scenes.index`) and evaluate each
+   derived form as a numeric program (:mod:`pendsym.scenes.program`: its distinct nodes once each, by mpmath at
+   GUARD = 45 digits, rounded to 30, then to a double); ``pendsym derive`` stores the programs.
 4. For each kept effect take the first-order Result when its next-order error is within a
    share of the tolerance, else the effect's more complete model (e.g. the exact swing).
 5. The swing time T = T0 Π(1 + ΔT/T); its estimated error is the sum of the kept effects'
