@@ -76,3 +76,13 @@ def test_a_program_is_data_through_the_codec_and_a_foreign_name_is_refused():
     bad = program.Program((), (("const", "__class__"),), (False,))
     with pytest.raises(program.Unsupported):
         program.run(bad, {})
+
+
+def test_an_endpoint_singularity_falls_back_to_tanh_sinh():
+    """Gauss–Legendre is kept only when its error estimate is at the working precision: ∫₀¹ s^(−1/2) ds = 2."""
+    got = _at(sp.Integral(1 / sp.sqrt(s * x), (s, 0, 1)), {"x": "1"}, 30)
+    with mp.workdps(30):
+        gauss = mp.quad(lambda t: 1 / mp.sqrt(t), [0, 1], method="gauss-legendre")
+        assert abs(gauss - 2) > mp.mpf(10) ** -3                  # what Gauss–Legendre alone would give
+        assert got == mp.quad(lambda t: 1 / mp.sqrt(t), [0, 1])   # tanh–sinh's
+        assert abs(got - 2) < mp.mpf(10) ** -15
