@@ -143,9 +143,16 @@ def _parameters_of(scene: Scene, memoir: str) -> dict[str, float]:
 
 
 def evaluate(scene: Scene, dps: int = 30) -> tuple[list[tuple[str, str, mp.mpf]], int]:
-    """[(id, title, value)] and the number of Results built (the closure only)."""
+    """[(id, title, value)] and the number of Results in the closure of the scene's Results.  The forms, titles and
+    declared ranges come from the index of the Results and the cache (:mod:`pendsym.scenes.index`): no memoir is
+    imported when a derive stored them; otherwise only the sections of the closure are, and the closure is built."""
+    from .scenes import index          # the index of the Results, read without importing a memoir
     try:
-        built = registry.build(scene.results)
+        entries = index.entries()
+        for rid in scene.results:
+            if rid not in entries:
+                raise registry.UnknownResult(rid, entries)
+        forms, n_built = index.derived_values(scene.results, entries)
     except registry.UnknownResult as exc:
         raise SceneError(str(exc)) from None
     used: dict[str, set[str]] = {}
@@ -153,9 +160,8 @@ def evaluate(scene: Scene, dps: int = 30) -> tuple[list[tuple[str, str, mp.mpf]]
     for rid in scene.results:
         memoir = rid.split(".", 1)[0]
         values = _parameters_of(scene, memoir)
-        result = built[rid]
-        declared = {a.name: (a.lo, a.hi) for a in result.spec.kernel.args} if result.spec.kernel else {}
-        expr = result.derived_value
+        declared = {name: (lo, hi) for name, lo, hi in entries[rid].ranges}
+        expr = forms[rid]
         subs = {}
         for sym in sorted(expr.free_symbols, key=lambda s: s.name):
             if sym.name not in values:
@@ -170,10 +176,10 @@ def evaluate(scene: Scene, dps: int = 30) -> tuple[list[tuple[str, str, mp.mpf]]
         value = mp.mpf(val)
         if not mp.isfinite(value) or not math.isfinite(float(value)):
             raise SceneError(f"{rid} = {mp.nstr(value, 5)} for this scene: not a finite double")
-        out.append((rid, result.spec.title, value))
+        out.append((rid, entries[rid].title, value))
     for key, table in scene.parameters:
         memoirs = [key] if key else sorted({i.split(".", 1)[0] for i in scene.results})
         unused = {name for name, _ in table} - set().union(*(used.get(m, set()) for m in memoirs))
         if unused:
             raise SceneError(f"parameters not used by the scene's Results: {', '.join(printable(u) for u in sorted(unused))}")
-    return out, len(built)
+    return out, n_built

@@ -57,6 +57,25 @@ def test_the_index_has_the_keys_sections_and_definitions_of_a_full_derive():
         assert entry.key == plan.key("built", rid)
         assert registry.memoir(spec.memoir).section_of(rid).module == entry.section
         assert entry.has_defs == bool(spec.defs)
+        assert entry.title == spec.title
+        assert entry.ranges == (tuple((a.name, a.lo, a.hi) for a in spec.kernel.args) if spec.kernel else ())
     rid = "haag1935.eq043.dT"
     assert sp.srepr(sp.Tuple(*(sp.Tuple(*d) for d in index.defs(rid, entries)))) == \
         sp.srepr(sp.Tuple(*(sp.Tuple(*d) for d in plan.specs[rid].defs)))
+
+
+def test_an_id_list_scene_imports_no_section_when_the_cache_holds_its_forms(root):
+    """The memoir-minded scene (a list of ids) reads its forms, titles and ranges from the index and the cache: once
+    its closure is stored, answering it again imports no section (it used to build every memoir)."""
+    from pendsym import scene
+    path = root / "derivations/cellerier/scenes/gravity_pendulum_on_support.toml"
+    rows, built = scene.evaluate(scene.load(path))           # stores the closure's forms if they were missing
+    assert built == 10 and [r[0] for r in rows] == ["cellerier.delta_static", "cellerier.delta_practical"]
+    code = ("import sys\nfrom pendsym import scene\n"
+            f"rows, built = scene.evaluate(scene.load({str(path)!r}))\n"
+            "print(built, *(r[1] for r in rows), sep='|')\n"
+            "print(' '.join(sorted(m for m in sys.modules if m.startswith('derivations'))))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=root)
+    answer, modules = out.stdout.splitlines()
+    assert answer.split("|") == ["10", *(r[1] for r in rows)]
+    assert set(modules.split()) <= {"derivations", "derivations.cellerier"}

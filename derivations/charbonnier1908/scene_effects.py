@@ -28,11 +28,11 @@ def _circular_exact(inst: Instrument) -> tuple[float, float, str]:
 
 def _drift_exact(inst: Instrument) -> tuple[float, float, str]:
     """T/T_lin − 1 for l = l0(1 + at), θ'' + (2/l)l'θ' + (g/l)θ = 0 integrated (n°27–28's governing model)."""
-    from . import truth        # the integration's module, imported only by a scene that needs it
+    from . import scene_drift        # the integration, imported only by a scene that needs it
     a = inst.drift_a
     with mp.workdps(20):
-        sw = truth.swing("growing", repr(inst.alpha), repr(inst.k), 20, a=repr(a))
-        rel = sw.T * mp.mpf(inst.k) / mp.pi - 1
+        T = scene_drift.swing_time(repr(inst.alpha), repr(inst.k), 20, repr(a))
+        rel = T * mp.mpf(inst.k) / mp.pi - 1
     return float(rel), 1e-15, "θ'' + (2/l)l'θ' + (g/l)θ = 0 with l = l0(1 + at) integrated (mpmath odefun, 20 digits)"
 
 

@@ -1,6 +1,7 @@
 """``make bench``: how fast each example scene answers (issue: ≤ 1 s after ``make derive``, ≤ 10 s cold).
 
-Every ``scenes/*.toml`` is answered by ``pendsym scene FILE`` in a fresh process, three ways:
+Every ``scenes/*.toml`` (and every id-list scene, ``derivations/*/scenes/*.toml``) is answered by ``pendsym scene
+FILE`` in a fresh process, three ways:
 
 * **cold**: an empty cache (a temporary ``PENDSYM_CACHE``): the closure of the kept effects is derived;
 * **warm**: the cache a derive filled (``PENDSYM_CACHE`` as set, or the default), the scene's answer itself not
@@ -51,10 +52,17 @@ def _stats(samples: list[tuple[float, float]]) -> dict:
 def first_answer(path: str) -> int:
     """The answer of a scene without the memo of answers (the Results' cache is used): what a user sees the first
     time a scene is asked after ``make derive``."""
-    from . import load, solved, text
-    from ..scene import printable
-    sc = load(path)
-    print(text(solved(sc, f"scene {printable(path)}"), printable(sc.name or Path(path).stem)))
+    from . import from_data, solved, text
+    from .. import scene
+    data = scene.parse(path)
+    where = f"scene {scene.printable(path)}"
+    if not scene.is_hardware(data):                 # a list of Result ids: their values (no memo of answers)
+        sc = scene.load(path, data)
+        rows, built = scene.evaluate(sc)
+        print(sc.name, built, *(f"{rid} {value}" for rid, _, value in rows))
+        return 0
+    sc = from_data(data, where)
+    print(text(solved(sc, where), scene.printable(sc.name or Path(path).stem)))
     return 0
 
 
@@ -93,6 +101,7 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="pendsym-scenes-bench")
     p.add_argument("--out", default="generated/bench")
     p.add_argument("--scenes", default="scenes", help="the directory of the example scenes")
+    p.add_argument("--id-lists", default="derivations/*/scenes/*.toml", help="the id-list scenes (a glob)")
     p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--cold", type=int, default=1, help="cold runs per scene (each derives its closure)")
     p.add_argument("--only", default=None, help="one scene file name")
@@ -100,7 +109,7 @@ def main(argv=None) -> int:
     args = p.parse_args(argv)
     if args.first:
         return first_answer(args.first)
-    files = sorted(Path(args.scenes).glob("*.toml"))
+    files = sorted(Path(args.scenes).glob("*.toml")) + sorted(Path().glob(args.id_lists))
     if args.only:
         files = [f for f in files if f.name == args.only]
     print(HEADER)

@@ -3,8 +3,9 @@
 1. Select every declared effect that applies to the instrument (:mod:`pendsym.scenes.effects`).
 2. Estimate each from the memoir's printed statement; drop the smallest while their sum stays
    within half the tolerance (a dropped effect's Result is never built).
-3. Build only the closure of the kept effects' Results (:func:`pendsym.registry.build`) and
-   evaluate each derived form at 30 digits.
+3. Build only the closure of the kept effects' Results (:mod:`pendsym.scenes.index`) and evaluate each
+   derived form as a numeric program (:mod:`pendsym.scenes.program`: its distinct nodes once each, by mpmath at
+   GUARD = 45 digits, rounded to 30, then to a double); ``pendsym derive`` stores the programs.
 4. For each kept effect take the first-order Result when its next-order error is within a
    share of the tolerance, else the effect's more complete model (e.g. the exact swing).
 5. The swing time T = T0 Π(1 + ΔT/T); its estimated error is the sum of the kept effects'
@@ -13,18 +14,15 @@
 """
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 
-import mpmath as mp
 import sympy as sp
-from sympy.printing.pycode import MpmathPrinter
 
-from .. import registry, verify
-from ..result import Result
+from .. import registry
 from ..scene import SceneError
 from . import index, schema
+from .evaluate import _log_slope, _value, programs
 from .effects import Coefficient, Effect, Instrument, coefficients, effects, pending
 
 SECONDS_PER_DAY = 86400.0
@@ -157,77 +155,6 @@ def _unaccounted_pairs(kept: list[Effect], rels: dict[str, float]) -> list[tuple
     return [(x, y) for n, x in enumerate(names) for y in names[n + 1:] if frozenset((x, y)) not in given]
 
 
-def build(ids: list[str]) -> dict[str, Result]:
-    """The Results of the closure of ids (:func:`pendsym.scenes.index.results`)."""
-    return index.results(ids, index.entries())
-
-
-def derived_forms(ids: list[str]) -> tuple[dict[str, sp.Basic], int, int]:
-    """({id: its derived form under its definitions}, the size of the ids' closure, how many Results the memoirs
-    hold), from the index of the Results (:mod:`pendsym.scenes.index`): the forms are read from the shared cache
-    under the keys a full derive uses, or derived here (only the sections of their closure imported) and stored."""
-    entries = index.entries()
-    values, closure_size = index.derived_values(ids, entries)
-    return values, closure_size, len(entries)
-
-
-def _value(expr: sp.Expr, values: dict[str, float], rid: str) -> float:
-    """The derived form at this scene, at 30 digits."""
-    subs = {}
-    for sym in expr.free_symbols:
-        if sym.name not in values:
-            raise SceneError(f"{rid} needs the symbol {sym.name}, which the memoir's scene mapping does not give")
-        subs[sym] = sp.Float(repr(float(values[sym.name])), 30)
-    with mp.workdps(30):
-        val = _by_mpmath(expr, subs) if expr.has(*SLOW_FOR_EVALF) else sp.N(expr.subs(subs), 30)
-    if not val.is_number or not val.is_real or val.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise SceneError(f"{rid} has no finite real value for this scene")
-    out = float(val)
-    if not math.isfinite(out):
-        raise SceneError(f"{rid} = {val} for this scene: not a finite double")
-    return out
-
-
-# Forms that sp.N evaluates slowly (its adaptive evalf of Bessel functions takes minutes on the large forms of a
-# holed blade) or inexactly (an integral without closed form): evaluated by mpmath at GUARD digits instead, the
-# Bessel values at fixed arguments computed once, the integral by mpmath's quadrature.
-SLOW_FOR_EVALF = (sp.Integral, sp.besselj, sp.bessely)
-GUARD = 45
-
-
-@functools.lru_cache(maxsize=32)
-def _compiled(expr: sp.Expr):
-    """(names of the free symbols, f): f(*values) evaluates expr by mpmath at the precision in force; the Bessel
-    values that do not depend on an integration variable are computed once per call (not at each quadrature node).
-    Compiled once per form (a form is evaluated again for the sensitivity)."""
-    bound = {v for i in expr.atoms(sp.Integral) for v in i.variables}
-    fixed = sorted((f for f in expr.atoms(sp.besselj, sp.bessely) if not f.free_symbols & bound), key=sp.srepr)
-    stand = [sp.Symbol(f"bessel_value_{n}") for n in range(len(fixed))]
-    syms = sorted(expr.free_symbols, key=lambda x: x.name)
-    values_of = _lambdify_mp(sp.Tuple(*fixed), syms)
-    main = _lambdify_mp(expr.xreplace(dict(zip(fixed, stand))), [*syms, *stand])
-
-    def f(*args):
-        return main(*args, *values_of(*args))
-    return tuple(x.name for x in syms), f
-
-
-def _lambdify_mp(expr: sp.Basic, symbols: list[sp.Symbol]):
-    """:func:`pendsym.verify.lambdify_mp` with the terms printed in the tree's order, not sorted (sorting the terms
-    of a holed blade's large forms was most of a warm scene's time; the same terms are summed)."""
-    printer = MpmathPrinter({"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True,
-                             "user_functions": {}, "order": "none"})
-    return sp.lambdify(tuple(symbols), expr, modules="mpmath", printer=printer)
-
-
-def _by_mpmath(expr: sp.Expr, subs: dict) -> sp.Float:
-    """expr at the numbers ``subs`` by mpmath at GUARD digits (:func:`_compiled`)."""
-    names, f = _compiled(expr)
-    by_name = {sym.name: value for sym, value in subs.items()}
-    with mp.workdps(GUARD):
-        return sp.Float(f(*[mp.mpf(by_name[n]) for n in names]), 30)
-
-
 def _drop(applicable: list[tuple[Effect, float]], tol: float) -> set[str]:
     """Drop the smallest estimates while their sum stays within half the tolerance."""
     dropped, total = set(), 0.0
@@ -248,32 +175,6 @@ def _values(eff: Effect | Coefficient, inst: Instrument, built: dict[str, sp.Bas
         used[rid] = _value(built[rid], values, rid)
     values.update(eff.given(inst, used) if eff.given else {})
     return values
-
-
-def _log_slope(expr: sp.Expr, values: dict[str, float], exponents, rid: str) -> float:
-    """d log(expr)/d log g = Σ p_s s ∂log(expr)/∂s over the symbols s ∝ g^p (symbolic derivatives, 30 digits)."""
-    if expr.has(*SLOW_FOR_EVALF):
-        return _log_slope_by_mpmath(expr, values, exponents)
-    out, base = 0.0, None
-    for sym in expr.free_symbols:
-        p = exponents.get(sym.name, 0)
-        if p:
-            base = _value(expr, values, rid) if base is None else base      # the form's value, evaluated once
-            out += p * values[sym.name] * _value(sp.diff(expr, sym), values, rid) / base
-    return out
-
-
-def _log_slope_by_mpmath(expr: sp.Expr, values: dict[str, float], exponents) -> float:
-    """d log(expr)/d log g for a form :data:`SLOW_FOR_EVALF`: the derivative in t of log expr(s e^{p_s t}) at t = 0,
-    the compiled form (:func:`_compiled`) differentiated by mpmath (``mp.diff``, GUARD digits)."""
-    names, f = _compiled(expr)
-    with mp.workdps(GUARD):
-        base = [mp.mpf(values[n]) for n in names]
-        powers = [mp.mpf(exponents.get(n, 0)) for n in names]
-
-        def log_at(t):
-            return mp.log(f(*[b * mp.exp(p * t) for b, p in zip(base, powers)]))
-        return float(mp.diff(log_at, 0))
 
 
 def solve(sc: schema.Scene) -> Budget:
@@ -301,7 +202,7 @@ def solve(sc: schema.Scene) -> Budget:
     try:
         ids = [e.result for e in kept] + [u for e in kept for u in e.uses] + [c.result for c in coefs] + \
             [u for c in coefs for u in c.uses]
-        built, closure_size, total = derived_forms(ids) if ids else ({}, 0, len(index.entries()))
+        built, closure_size, total = programs(ids) if ids else ({}, 0, len(index.entries()))
     except registry.UnknownResult as exc:
         raise SceneError(f"a memoir's scene effect names {exc}") from None
     share = tol / (4 * max(1, len(kept)))

@@ -9,8 +9,10 @@ only to derive a form the cache does not hold (a cold cache), and then only the 
 """
 from __future__ import annotations
 
+import hashlib
 import importlib
 from dataclasses import dataclass
+from pathlib import Path
 from graphlib import TopologicalSorter
 from typing import Iterable, Mapping
 
@@ -18,8 +20,9 @@ import sympy as sp
 
 from .. import cache, keys, registry
 from ..result import Result, Spec
+from . import program
 
-FORMAT = "2"          # bump when the meaning of an entry changes
+FORMAT = "3"          # bump when the meaning of an entry changes
 
 
 @dataclass(frozen=True)
@@ -30,11 +33,22 @@ class Entry:
     deps: tuple[str, ...]
     key: str                                       # the cache key of its (derived, printed) forms
     has_defs: bool                                 # whether its Spec has definitions (stored apart: :func:`defs`)
+    title: str = ""                                # its Spec's title
+    ranges: tuple[tuple[str, float, float], ...] = ()   # its kernel's declared ranges (name, lo, hi), if any
 
 
 def index_key(pkgs: tuple[str, ...]) -> str:
     """The key of the index of the memoirs in ``pkgs``: every source file (no memoir imported)."""
     return keys.digest(("scene index", FORMAT, keys.tree_key(pkgs)))
+
+
+def program_key(entry: Entry) -> str:
+    """The key of a Result's numeric program (:mod:`pendsym.scenes.program`): its forms' key, and the source of the
+    compiler (a change to it compiles again)."""
+    return keys.digest(("scene program", FORMAT, _PROGRAM_SOURCE, entry.key))
+
+
+_PROGRAM_SOURCE = hashlib.sha256(Path(program.__file__).read_bytes()).hexdigest()
 
 
 def defs_key(entry: Entry) -> str:
@@ -51,13 +65,19 @@ def compute(pkgs: tuple[str, ...]) -> dict[str, Entry]:
     order = registry.closure(list(specs), specs)
     section = {s.id: sec.module for m in found.values() for sec in m.sections for s in sec.specs}
     ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, ("pendsym", *pkgs))
-    return {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), bool(specs[rid].defs))
-            for rid in order}
+    return {rid: Entry(section[rid], specs[rid].deps, keys.digest(("built", "", ks[rid])), bool(specs[rid].defs),
+                       specs[rid].title, _ranges(specs[rid])) for rid in order}
+
+
+def _ranges(spec: Spec) -> tuple[tuple[str, float, float], ...]:
+    """The kernel's declared ranges of its arguments (the id-list scene refuses a value outside them)."""
+    return tuple((a.name, float(a.lo), float(a.hi)) for a in spec.kernel.args) if spec.kernel else ()
 
 
 def remember(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
-    """The index and the definitions of every Result that has some, stored (``pendsym derive`` calls it, with the
-    memoirs already imported, so that the scenes that follow import none)."""
+    """The index, the definitions of every Result that has some, and the numeric programs of the Results the
+    memoirs' scene effects name, stored (``pendsym derive`` calls it, with the memoirs already imported, so that the
+    scenes that follow import none and print no form)."""
     pkgs = registry.packages() if pkgs is None else pkgs
     found = entries(pkgs)
     missing = [rid for rid, entry in found.items() if entry.has_defs and cache.load(defs_key(entry)) is cache.MISSING]
@@ -65,6 +85,9 @@ def remember(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
         specs = registry.all_specs(registry.discover(pkgs))
         for rid in missing:
             cache.store(defs_key(found[rid]), specs[rid].defs)
+    from .effects import discover, discover_coefficients
+    named = {rid for e in (*discover(pkgs), *discover_coefficients(pkgs)) for rid in (e.result, *e.uses)}
+    programs(sorted(named & set(found)), found)
     return found
 
 
@@ -147,3 +170,32 @@ def derived_values(ids: Iterable[str], index: Mapping[str, Entry]) -> tuple[dict
         given = defs(rid, index)
         out[rid] = forms[rid].subs(dict(given), simultaneous=True) if given else forms[rid]
     return out, size
+
+
+def programs(ids: Iterable[str], index: Mapping[str, Entry]) -> dict[str, "program.Program | sp.Basic"]:
+    """{id: the numeric program of its derived form under its definitions}, from the cache, or compiled from the form
+    (:func:`derived_values`) and stored; a form the compiler does not support is given as the SymPy form itself (and
+    ``None`` is stored for it, so that it is not compiled again)."""
+    ids = list(dict.fromkeys(ids))
+    out: dict[str, program.Program | sp.Basic] = {}
+    unsupported = []
+    for rid in ids:
+        got = cache.load(program_key(index[rid]))
+        if got is None:
+            unsupported.append(rid)
+        elif got is not cache.MISSING:
+            out[rid] = got
+    missing = [rid for rid in ids if rid not in out]
+    if missing:
+        forms, _ = derived_values(missing, index)
+        for rid in missing:
+            if rid in unsupported:
+                out[rid] = forms[rid]
+                continue
+            try:
+                compiled = program.compile(forms[rid])
+            except program.Unsupported:
+                compiled = None
+            cache.store(program_key(index[rid]), compiled)
+            out[rid] = forms[rid] if compiled is None else compiled
+    return out
