@@ -8,6 +8,7 @@ by mpmath's linear solver; G_2 = ∫_0^λ w²/|M| ds (n°105) by mpmath quadratu
 central differences of the same reference.  The kernel is the emitted one: generated/python imported,
 generated/c compiled at -O2.
 """
+import functools
 import math
 
 import mpmath as mp
@@ -59,6 +60,7 @@ def G2_reference(u, u_p, rho):
     return total
 
 
+@functools.lru_cache(maxsize=None)
 def reference(p):
     """(value, κ) of G_2/λ at the double point p = (u, u_p, ρ), at DPS digits (κ by central differences)."""
     with mp.workdps(DPS):
@@ -90,7 +92,7 @@ POINTS = [(1e-6, 1e-6, 1e-6), (HALF_PI, HALF_PI, 1 - 1e-6), (HALF_PI, HALF_PI, 1
           (0.003481755388116428, 0.004552116407563877, 0.17542467554961236),
           (1.570244602042472, 0.05781095896028143, 0.03155386561715299),
           (1.5707114547997376, 0.9488504293465543, 0.05743826499135507), (0.02, 1.5, 0.999), (1.3, 1e-3, 0.999)]
-QUICK = [(1.0, 0.4, 0.4), (1.5, 0.15, 0.1), (1.570244602042472, 0.05781095896028143, 0.03155386561715299)]
+QUICK = [(1.5, 0.15, 0.1)]     # the hole vanished (ω' = ω)
 
 
 def test_the_reference_blade_solves_the_blade_equation():
@@ -119,7 +121,7 @@ def test_the_reference_gives_the_uniform_blade_when_the_hole_vanishes():
 
 
 def test_the_kernel_holds_the_contract_on_a_few_points(emitted):
-    """Quick tier: three points (the hole, the hole vanished, the audit's worst sample point)."""
+    """Quick tier: one point, the hole vanished (u_p = ρu)."""
     for p in QUICK:
         value, kappa = reference(p)
         for lang, fn in emitted.items():
@@ -159,30 +161,29 @@ def test_the_series_of_x_minus_sin_x_is_exact_to_the_double():
             assert abs(poly(x) - exact) < mp.mpf(2) ** -58 * exact, x
 
 
-def test_the_form_has_no_difference_but_in_the_series():
-    """The supplied form's only subtractions are the alternating coefficients of the series: every sin and cos
-    argument lies in [0, π/2] on the box, so sin, cos ≥ 0 there, and no Add of the form outside the Horner
-    polynomials holds a negative term (checked on the SymPy form: a minus sign outside would be a cancellation)."""
-    import sympy as sp
-    form = kernels.short_form()
-    series_polys = set()
-    for e in sp.preorder_traversal(form):
-        if isinstance(e, sp.Add) and all(t.is_number or t.has(kernels.u_p) or t.has(kernels.rho) for t in e.args):
-            pass
-    negatives = [a for a in form.atoms(sp.Add)
-                 if any(t.could_extract_minus_sign() for t in a.args)
-                 and not any(isinstance(t, sp.Rational) and t.q > 10**3 for t in a.args)]
-    # the one allowed kind: 1 − ρ (exact for ρ ≥ 1/2, one rounding below)
-    assert all(a == 1 - kernels.rho for a in negatives), negatives
-    assert not series_polys
+@functools.lru_cache(maxsize=None)
+def derived_333():
+    """The Result's derived form: (333) over the concentric hole in u, u_p, ρ."""
+    from derivations.haag1935.ch9_holes import rectangle_derivation
+    return kernels.concentric_scaled(rectangle_derivation.G2())
 
 
 @pytest.mark.slow
 def test_the_supplied_form_is_the_derived_333():
     """The half-blade form (exact, no series) equals (333) over the concentric hole at three points to 40 digits, and
     the series form to 1e-15 (:func:`checked_short_form` raises otherwise)."""
-    from derivations.haag1935.ch9_holes import rectangle_derivation
-    kernels.checked_short_form(kernels.concentric_scaled(rectangle_derivation.G2()))
+    kernels.checked_short_form(derived_333())
+
+
+@pytest.mark.slow
+def test_the_reference_sees_the_cancellation_of_the_derived_333():
+    """The test can fail: the derived (333) in double (math) is far over the bound at a small u and a narrow hole,
+    where the terms of its three integrals cancel, against the same reference."""
+    import sympy as sp
+    naive = sp.lambdify([kernels.u, kernels.u_p, kernels.rho], derived_333(), "math")
+    p = (1e-3, 0.5, 0.01)
+    value, kappa = reference(p)
+    assert ulp_error(naive(*p), value) > 100 * BOUND * max(1.0, kappa)
 
 
 def test_outside_the_domain_is_a_domain_error(emitted):
