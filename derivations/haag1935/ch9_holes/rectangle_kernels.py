@@ -140,16 +140,16 @@ def _pieces_as_written(with_series: bool) -> sp.Expr:
     """G_2/λ = 2 Σ K²(hole + ω(C(b + cX/C)² + c²(SC − X²)/C)) over the even and odd half solutions (K = 1/(2D)),
     α − sin α and u_p − sin u_p exact or by :func:`x_minus_sin_series`, with ω = u, ω' = u_p/ρ, α = u(1 − ρ)/2,
     β = u_p/2 (λ = 1).  The parts are :class:`~pendsym.emit.kernels.plan.Grouped` (each evaluated as one unit, in
-    the order written): ω' = u_p/ρ, α, r = ω'/ω, 2C = α + sin α cos α (``expand_trig``), X/C = sin²α/(2C),
-    4(SC − X²)/(2C), D and b + cX/C; left to ``cse`` the emitter rounded ω' as u_p·(1/ρ) and D, b + cX/C as
-    products of five or six factors, 5.39 scaled ulp in the audit against 2.8 for this order."""
+    the order written): ω' = u_p/ρ, α (u/2 − uρ/2 for ρ < ½, one rounding), 2C = α + sin α cos α
+    (``expand_trig``), X/C = sin²α/(2C), 4(SC − X²)/(2C), cω and ωb (each rounded once and shared by the slope D
+    and the numerator, so that their rounding moves both alike), D and b + cX/C; left to ``cse`` the emitter
+    rounded ω' as u_p·(1/ρ) and D, b + cX/C as products of five or six factors (5.39 scaled ulp in the audit)."""
     C, X, _, det = gram()
-    z, r_sym = sp.Symbol("z", positive=True), sp.Symbol("r", positive=True)
+    z = sp.Symbol("z", positive=True)
     xms = x_minus_sin_series() if with_series else sp.Lambda(z, z - sp.sin(z))
     # α = u(1 − ρ)/2: for ρ < ½, 1 − ρ is rounded, and u/2 − uρ/2 rounds once (its second term is the smaller)
     A = Grouped(sp.Piecewise((u / 2 - u * rho / 2, rho < sp.Rational(1, 2)), (u * (1 - rho) / 2, True)))
     W, B = Grouped(u_p / rho), u_p / 2
-    r = Grouped(W / u)
     two_C = sp.expand_trig(2 * C)
     if sp.simplify(two_C - (alpha + sp.sin(alpha) * sp.cos(alpha))) != 0:
         raise ValueError(f"2C = {two_C} is not α + sin α cos α")
@@ -162,16 +162,19 @@ def _pieces_as_written(with_series: bool) -> sp.Expr:
     total = sp.Integer(0)
     for parity in ("even", "odd"):
         D, b, c, unit = half_solution(parity)
-        c_r = sp.simplify(c.subs(rd.omega_p, r_sym * omega))          # c = −r sin β or r cos β: ω' only as r
         c_w = sp.simplify(c * omega)                                    # cω = −ω' sin β or ω' cos β
-        if c_r.has(omega) or c_w.has(omega):
-            raise ValueError(f"the {parity} blade piece's c is not r or ω'/ω times a function of β: {c}")
-        square = Grouped(b.subs(beta, B) + c_r.subs({r_sym: r, beta: B}) * ratio)   # (b + cX/C)/K
+        if c_w.has(omega) or b.has(omega) or b.has(rd.omega_p):
+            raise ValueError(f"the {parity} blade piece is not b(β), c = ω'/ω × a function of β: {b}, {c}")
+        if sp.simplify(D - (-omega * b * sp.sin(alpha) + c_w * sp.cos(alpha))) != 0:
+            raise ValueError(f"the {parity} slope per unit amplitude {D} is not −ωb sin α + cω cos α")
+        P, Q = Grouped(c_w.subs(env)), Grouped(u * b.subs(env))      # cω and ωb, each rounded once, shared
+        square = Grouped(b.subs(env) + P / u * ratio)                  # (b + cX/C)/K, cX/C = (cω/ω)(X/C)
         unit = sp.factor(unit.subs(beta, B)).subs(u_p - sp.sin(u_p), xms(u_p))
         if with_series and parity == "odd" and unit.has(sp.sin(u_p)):
             raise ValueError(f"the odd hole integral {unit} does not hold u_p − sin u_p")
-        blade_part = u * two_C * square**2 / 2 + c_w.subs(env) ** 2 / u * q / 2   # ω(C(b + cX/C)² + c²(SC − X²)/C)
-        total += 2 * (unit.subs(env) + blade_part) / (2 * Grouped(D.subs(env))) ** 2
+        blade_part = u * two_C * square**2 / 2 + P**2 / u * q / 2     # ω(C(b + cX/C)² + c²(SC − X²)/C)
+        slope = Grouped(-Q * sp.sin(A) + P * sp.cos(A))                # D = −ωb sin α + cω cos α
+        total += 2 * (unit.subs(env) + blade_part) / (2 * slope) ** 2
     return total
 
 
