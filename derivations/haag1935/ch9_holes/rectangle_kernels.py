@@ -168,11 +168,11 @@ def _pieces_as_written(with_series: bool) -> sp.Expr:
         if sp.simplify(D - (-omega * b * sp.sin(alpha) + c_w * sp.cos(alpha))) != 0:
             raise ValueError(f"the {parity} slope per unit amplitude {D} is not −ωb sin α + cω cos α")
         P, Q = Grouped(c_w.subs(env)), Grouped(u * b.subs(env))      # cω and ωb, each rounded once, shared
-        square = Grouped(b.subs(env) + P / u * ratio)                  # (b + cX/C)/K, cX/C = (cω/ω)(X/C)
+        scaled_square = Grouped(Q + P * ratio)                         # ω(b + cX/C)/K, sharing cω and ωb with D
         unit = sp.factor(unit.subs(beta, B)).subs(u_p - sp.sin(u_p), xms(u_p))
         if with_series and parity == "odd" and unit.has(sp.sin(u_p)):
             raise ValueError(f"the odd hole integral {unit} does not hold u_p − sin u_p")
-        blade_part = u * two_C * square**2 / 2 + P**2 / u * q / 2     # ω(C(b + cX/C)² + c²(SC − X²)/C)
+        blade_part = (two_C * scaled_square**2 + P**2 * q) / (2 * u)   # ω(C(b + cX/C)² + c²(SC − X²)/C)
         slope = Grouped(-Q * sp.sin(A) + P * sp.cos(A))                # D = −ωb sin α + cω cos α
         total += 2 * (unit.subs(env) + blade_part) / (2 * slope) ** 2
     return total
