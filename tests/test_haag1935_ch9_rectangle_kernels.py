@@ -1,12 +1,13 @@
-"""The kernel of G_2/λ of the blade with a concentric rectangular hole (n°105–106, (333); issue #14), emitted in
-Python and C, in u = ωλ, u_p = ω'p, ρ = p/λ.
+"""The supplied form for a kernel of G_2/λ of the blade with a concentric rectangular hole (n°105–106, (333); issue
+#14), in u = ωλ, u_p = ω'p, ρ = p/λ.  It is not declared (it fails the audit: 4.4 scaled ulp,
+:data:`.rectangle_kernels.AUDIT`), so it is measured here as the engine would print it in Python
+(:func:`pendsym.emit.kernels.supplied.emitted_py`), not from generated/.
 
 The reference is written here from the memoir's definitions, not from the kernel's form nor from (333): the
 inverted blade (9), |M| w'' + w = 0 with |M| = 1/ω² off the hole and 1/ω'² on it (n°104), w a cos + sin on each
 of the three pieces, w and w' continuous at the hole's edges and w'(0) = 0, w'(λ) = 1 (n°4), the six constants
 by mpmath's linear solver; G_2 = ∫_0^λ w²/|M| ds (n°105) by mpmath quadrature, λ = 1.  κ = Σ|x_i ∂f/∂x_i|/|f| by
-central differences of the same reference.  The kernel is the emitted one: generated/python imported,
-generated/c compiled at -O2.
+central differences of the same reference.
 """
 import functools
 import math
@@ -81,8 +82,10 @@ def ulp_error(got, value) -> float:
 
 
 @pytest.fixture(scope="module")
-def emitted(emitted_kernels):
-    return emitted_kernels("haag1935").functions(NAME, 3)
+def emitted():
+    """{"Python": the form as the engine prints a kernel of it} (no C: it is not emitted)."""
+    from pendsym.emit.kernels.supplied import emitted_py
+    return {"Python": emitted_py(NAME, (kernels.U_ARG, kernels.UP_ARG, kernels.RHO_ARG), kernels.short_form())}
 
 
 HALF_PI = math.pi / 2
@@ -124,8 +127,9 @@ def test_the_reference_gives_the_uniform_blade_when_the_hole_vanishes():
         assert abs(G2_reference(u, u * mp.mpf("0.35"), mp.mpf("0.35")) - uniform) < mp.mpf(10) ** -30 * uniform
 
 
-def test_the_kernel_holds_the_contract_on_a_few_points(emitted):
-    """Quick tier: one point, the hole vanished (u_p = ρu)."""
+@pytest.mark.slow     # the form's derivation costs ~1.6 s
+def test_the_form_holds_the_contract_on_a_few_points(emitted):
+    """One point, the hole vanished (u_p = ρu)."""
     for p in QUICK:
         value, kappa = reference(p)
         for lang, fn in emitted.items():
@@ -133,15 +137,27 @@ def test_the_kernel_holds_the_contract_on_a_few_points(emitted):
 
 
 @pytest.mark.slow
-def test_the_kernel_holds_the_contract_against_the_quadrature(emitted):
-    """Within 4 ulp × max(1, κ) of ∫w²/|M| ds at the corners, on the hole-vanishing surface, at small u and
-    at narrow and wide holes."""
+def test_the_form_holds_the_contract_against_the_quadrature_here(emitted):
+    """Within 4 ulp × max(1, κ) of ∫w²/|M| ds at the corners, on the hole-vanishing surface, at small u, at narrow
+    and wide holes, at the first audit's worst point and at the worst points of a local search."""
     for p in POINTS:
         value, kappa = reference(p)
         for lang, fn in emitted.items():
             assert ulp_error(fn(*p), value) <= BOUND * max(1.0, kappa), (lang, p, kappa)
 
 
+@pytest.mark.slow
+def test_the_form_fails_the_contract_where_the_audit_found(emitted):
+    """Why no kernel is declared: at the audit's worst point the form is over 4 ulp × max(1, κ) against this
+    reference too (4.4 scaled); within twice the bound (its level: rounding, not cancellation).  When a better
+    form passes there, this test fails and the KernelSpec can be declared (after the audit)."""
+    p = kernels.AUDIT[-1][3]
+    value, kappa = reference(p)
+    err = ulp_error(emitted["Python"](*p), value) / max(1.0, kappa)
+    assert BOUND < err <= 2 * BOUND, (err, kappa)
+
+
+@pytest.mark.slow     # the form's derivation costs ~1.6 s
 def test_the_test_fails_for_a_kernel_scaled_by_1_plus_3e_15(emitted):
     """The test can fail: G_2/λ scaled by 1 + 3e-15 is over the bound at one of the quick points (κ there is
     small enough that 3e-15 relative is more than 4κ ulp)."""
@@ -191,8 +207,9 @@ def test_the_reference_sees_the_cancellation_of_the_derived_333():
     assert ulp_error(naive(*p), value) > 100 * BOUND * max(1.0, kappa)
 
 
+@pytest.mark.slow     # the form's derivation costs ~1.6 s
 def test_outside_the_domain_is_a_domain_error(emitted):
-    """docs/kernel-accuracy.md: ValueError in Python, NaN in C, for NaN, −inf and the doubles just outside the box."""
+    """docs/kernel-accuracy.md: ValueError in Python for NaN, −inf and the doubles just outside the box."""
     nxt = math.nextafter
     bad = [(math.nan, 1.0, 0.5), (-math.inf, 1.0, 0.5), (nxt(1e-6, 0), 1.0, 0.5), (nxt(HALF_PI, 2), 1.0, 0.5),
            (1.0, nxt(HALF_PI, 2), 0.5), (1.0, 1.0, nxt(1 - 1e-6, 1)), (1.0, 1.0, 0.0), (1.0, 0.0, 0.5)]

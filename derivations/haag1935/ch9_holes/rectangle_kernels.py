@@ -1,4 +1,13 @@
-"""Haag 1935, chapter IX, n°105–106: the kernel of G_2/λ of the blade with a concentric rectangular hole (issue #14).
+"""Haag 1935, chapter IX, n°105–106: toward the kernel of G_2/λ of the blade with a concentric rectangular hole (issue #14).
+
+**Status: not declared.**  The supplied form below (:func:`short_form`, :func:`kernel`) holds the contract on the
+derive sample (254 points: 2.31 scaled ulp, Python and C) but not in the audit (``python -m pendsym.audit --only
+eq333_G2_concentric_u``, 20,000 points with its adversarial search): :data:`AUDIT`.  So the Result of
+:mod:`.rectangle_table_kernels` carries no KernelSpec, and no kernel is emitted.  What is left is rounding, not
+cancellation: ~25 operations on the path of the value, the slope D squared (its own rounding and sin α's doubled),
+where κ = 1 (u near π/2) allows 4 ulp and κ = 2 (u → 0, G_2 ∝ 1/u²) 8; the worst points found are close to the
+uniform blade (u_p and ρ small).  A way on: the slope D and the squares in double-double (Dekker's products; the
+helpers are :mod:`pendsym.emit.kernels.supplied`'s), or a form with fewer operations near the uniform blade.
 
 **Arguments.**  G_2 of (333) is a length and depends on ω, ω', λ, s_0, p; for the concentric hole of n°106's footnote
 (λ − s_1 = s_0, i.e. s_0 = (λ − p)/2) G_2/λ is a function of three dimensionless numbers (:func:`concentric_scaled`,
@@ -64,7 +73,14 @@ HALF_PI = math.pi / 2                        # the double below π/2
 U_ARG = KernelArg("u", 1e-6, HALF_PI, log=True)
 UP_ARG = KernelArg("u_p", 1e-6, HALF_PI, log=True)
 RHO_ARG = KernelArg("rho", 1e-6, 1 - 1e-6, log=True)
-SERIES_TOLERANCE = sp.Rational(1, 2**60)     # the first term left out of x − sin x, relative, at x = π/2
+SERIES_TOLERANCE = sp.Rational(1, 2**60)
+# the audit of the form as it stood at each step (worst scaled ulp, Python = C; points over 4 of 20,000; where)
+AUDIT = (
+    ("the plain half-blade form, left to cse", 5.39, 83, (1.5707963267948966, 0.1350652078039178, 0.07934248049565838)),
+    ("its parts Grouped, cω and ωb shared by D", 6.33, 41,
+     (1.5707963252241002, 0.0029873161605352477, 0.0005780150330459939)),
+    ("ω(b + cX/C) as ωb + cω·X/C (this form)", 4.40, 44,
+     (0.03126596553082553, 3.5722303520047847e-06, 1.7013865218909938e-06)))
 
 
 def concentric_scaled(g2: sp.Expr) -> sp.Expr:
