@@ -23,7 +23,7 @@ from __future__ import annotations
 from types import ModuleType
 
 from . import rectangle_table, rhombus_table_ends, rhombus_table_functions, rhombus_table_small
-from . import rhombus_table_kernels, rhombus_table_scene
+from . import rectangle_table_kernels, rhombus_table_kernels, rhombus_table_scene
 
 SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (rectangle_table, "Chapter IX. The rectangular hole (321)–(333) and the stability remark of n°106"),
@@ -32,6 +32,7 @@ SECTIONS: tuple[tuple[ModuleType, str], ...] = (
     (rhombus_table_small, "Chapter IX. The rhombus hole for a small hole: series in k (not in the memoir)"),
     (rhombus_table_scene, "Chapter IX. The rhombus hole in a gravity meter: β1, a1, n², G, C (not in the memoir)"),
     (rhombus_table_kernels, "Chapter IX. The rhombus hole's end values in u = ωλ, q = kλ, with their kernels"),
+    (rectangle_table_kernels, "Chapter IX. G_2/λ of the concentric rectangular hole in u = ωλ, u_p = ω'p, ρ = p/λ (for a kernel)"),
 )
 
 
