@@ -15,6 +15,9 @@ The curvature is the state (no cubic to invert inside the integration): from μ'
     φ' = c,    c' = (X sin φ − Y cos φ − M'(c + a2c³)) / D,    D = M(1 + 3a2c²) = ∂μ/∂c,
     x' = cos φ,    y' = sin φ,
 
+with cos φ and sin φ carried in the state (C' = −cS, S' = cC), as in :func:`pendsym.nonlinear_blade.end_state`
+(no sine at odefun's raised precision),
+
 and the variations in p ∈ (X, Y, c0) (c0 = μ(0), the clamping couple):
 
     δφ' = δc,    δc' = ((X cos φ + Y sin φ)δφ + [p = X] sin φ − [p = Y] cos φ
@@ -85,7 +88,7 @@ class CubicLaw:
             A = mp.mpf(self.a2.p) / self.a2.q
             A3, A6 = 3 * A, 6 * A
             tol = mp.mpf(10) ** (-wdps)
-            phi, mu, x, y = mp.mpf(0), c0, mp.mpf(0), mp.mpf(0)
+            phi, mu, x, y, cos_phi, sin_phi = mp.mpf(0), c0, mp.mpf(0), mp.mpf(0), mp.mpf(1), mp.mpf(0)
             # per parameter (X, Y, c0): (δφ, δμ, δx, δy) at a piece's ends (μ and δμ are continuous)
             dvar = [[mp.mpf(0)] * 4 for _ in range(3)]
             dvar[2][1] = mp.mpf(1)
@@ -97,7 +100,7 @@ class CubicLaw:
                 # (c itself is 1/M times larger): odefun's Taylor steps are then as long as the linear law's while
                 # a2c² is small (near 1 + 3a2c² = 0 in the complex plane they shorten: a property of the law)
                 kappa = ref * curvature(mu, ref, A)
-                state = [phi, kappa, x, y]
+                state = [phi, kappa, x, y, cos_phi, sin_phi]
                 if variations:
                     # δκ = ref·δμ/D, D = ∂μ/∂c = ref(1 + 3a2c²)
                     stiff = 1 + 3 * A * (kappa / ref) ** 2
@@ -106,7 +109,7 @@ class CubicLaw:
                 def rhs(s, u, Mf=Mf, dMf=dMf, Mc=Mc, ref=ref, inv=1 / ref):
                     # κ' = ref·c' and δκ' = ref·δc' of the module's equations; on a piece where M is constant
                     # (ref = M) the factors ref/M drop out
-                    sn, cs = mp.sin(u[0]), mp.cos(u[0])
+                    cs, sn = u[4], u[5]
                     c = u[1] * inv
                     c2 = c * c
                     stiff = 1 + A3 * c2
@@ -120,22 +123,22 @@ class CubicLaw:
                         per = 1 / stiff
                         rate = load * per
                         damp = A6 * c * rate * per * inv
-                    out = [c, rate, cs, sn]
+                    out = [c, rate, cs, sn, -sn * c, cs * c]
                     if variations:
                         k = X * cs + Y * sn
                         for d, force in enumerate((sn, -cs, 0)):
-                            dphi, dkappa = u[4 + 4 * d], u[5 + 4 * d]
+                            dphi, dkappa = u[6 + 4 * d], u[7 + 4 * d]
                             out += [dkappa * inv, (k * dphi + force) * per - damp * dkappa, -sn * dphi, cs * dphi]
                     return out
                 end = mp.odefun(rhs, a, state, tol=tol)(b)
                 M = Mf(b) if Mc is None else Mc
-                phi, kappa, x, y = end[:4]
+                phi, kappa, x, y, cos_phi, sin_phi = end[:6]
                 c = kappa / ref
                 mu = M * c * (1 + A * c * c)
                 if variations:
                     # δμ = D·δc = M(1 + 3a2c²)·δκ/ref
                     scale = M * (1 + 3 * A * c * c) / ref
-                    dvar = [[end[4 + 4 * d], scale * end[5 + 4 * d], end[6 + 4 * d], end[7 + 4 * d]]
+                    dvar = [[end[6 + 4 * d], scale * end[7 + 4 * d], end[8 + 4 * d], end[9 + 4 * d]]
                             for d in range(3)]
             jac = None
             if variations:

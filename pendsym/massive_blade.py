@@ -88,21 +88,22 @@ def end_columns(mb: MassiveBlade, omega2, g, wdps: int) -> tuple:
         omega2, g = mp.mpf(omega2), mp.mpf(g)
         k = omega2 / g if mb.inertia else mp.mpf(0)
         tol = mp.mpf(10) ** (-wdps)
-        # state: W = ∫_s^λ μ/m, then (y, φ, Mφ', Y) for each of the two fundamental solutions
-        W0 = mass_ratio(mb) if mb.weight else mp.mpf(0)
-        state = [W0, mp.mpf(0), mp.mpf(0), mp.mpf(1), mp.mpf(0), mp.mpf(0), mp.mpf(0), mp.mpf(0), mp.mpf(1)]
+        # state: W = ∫_s^λ μ/m (with the weight only: X = 1 without it), then (y, φ, Mφ', Y) for each of the two
+        # fundamental solutions
+        w = 1 if mb.weight else 0
+        state = ([mass_ratio(mb)] if mb.weight else []) + [mp.mpf(x) for x in (0, 0, 1, 0, 0, 0, 0, 1)]
         for lo, hi, Mf, muf in _pieces(mb):
             def rhs(s, u, Mf=Mf, muf=muf):
                 m, rho = Mf(s), muf(s)
-                X = 1 + u[0]
-                out = [-rho if mb.weight else mp.mpf(0)]
-                for j in (1, 5):
+                X = 1 + u[0] if mb.weight else 1
+                out = [-rho] if mb.weight else []
+                for j in (w, w + 4):
                     y, phi, c, Y = u[j:j + 4]
                     out += [phi, c / m, X * phi - Y, -k * rho * y]
                 return out
             sol = mp.odefun(rhs, mp.mpf(lo), state, tol=tol)
             state = sol(mp.mpf(hi))
-        return tuple(tuple(state[j:j + 4]) for j in (1, 5))
+        return tuple(tuple(state[j:j + 4]) for j in (w, w + 4))
 
 
 @functools.lru_cache(maxsize=64)
@@ -124,11 +125,11 @@ def determinant(mb: MassiveBlade, a, R, g, omega2, wdps: int):
         return p * t - q * r
 
 
-def _root(mb: MassiveBlade, a, R, g, start, dps: int, scale, spread):
+def _root(mb: MassiveBlade, a, R, g, start, dps: int, scale, spread, tested: bool = True):
     """The root of det D next to ``start`` at ``dps`` digits: the secant method (mpmath's findroot) from
     (start, start·(1 + spread)), stopped when a step falls below 10^−(dps + 6)/2 relative (the error of the
-    next iterate is then of the order of that step times the error of the last: converged); the determinant
-    there, over ``scale``, must be below 10^−(dps + 3)."""
+    next iterate is then of the order of that step times the error of the last: converged); with ``tested``,
+    the determinant there, over ``scale``, must be below 10^−(dps + 3) (one more integration of the blade)."""
     wdps = working_dps(mb, dps)
     with mp.workdps(wdps):
         a, R, g, start = (mp.mpf(x) for x in (a, R, g, start))
@@ -138,7 +139,7 @@ def _root(mb: MassiveBlade, a, R, g, start, dps: int, scale, spread):
         pair = (start, start * (1 + spread))
         root = mp.findroot(det, pair, solver="secant", tol=mp.mpf(10) ** (-(dps + 6) / 2), verify=False,
                            maxsteps=60)
-        if not abs(det(root)) < mp.mpf(10) ** (-(dps + 3)):
+        if tested and not abs(det(root)) < mp.mpf(10) ** (-(dps + 3)):
             raise ValueError(f"massive blade: det D = {mp.nstr(det(root), 5)} at the root found")
         return +root
 
@@ -158,7 +159,8 @@ def principal_n2(mb: MassiveBlade, a, R, g, dps: int = 30, slowest: bool = False
         n2_0 = min(md.n2 for md in pair) if slowest else pair[0].n2
         low = min(dps, LADDER_DPS)
         scale = abs(determinant(mb, a_, R_, g_, n2_0, working_dps(mb, low))) + 1   # det is O(1) in units of g, n²
-        root = _root(mb, a_, R_, g_, n2_0, low, scale, mp.mpf(10) ** -6)
+        # the first rung is only a start for the second, whose root is tested
+        root = _root(mb, a_, R_, g_, n2_0, low, scale, mp.mpf(10) ** -6, tested=dps <= low)
         return _root(mb, a_, R_, g_, root, dps, scale, mp.mpf(10) ** -low) if dps > low else root
 
 

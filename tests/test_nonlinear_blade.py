@@ -50,6 +50,45 @@ def test_elastica_jacobian_against_finite_differences():
                 assert abs(fd - end.jacobian[r][p]) < mp.mpf("1e-18") * (1 + abs(fd))
 
 
+def _trigonometric_end(blade, X, Y, c0, wdps):
+    """The elastica in its textbook form, φ' = μ/M, μ' = X sin φ − Y cos φ, x' = cos φ, y' = sin φ (odefun),
+    with the variations in (X, Y, c0): ∂φ' = ∂μ/M, ∂μ' = (X cos φ + Y sin φ)∂φ + [X] sin φ − [Y] cos φ,
+    ∂x' = −sin φ ∂φ, ∂y' = cos φ ∂φ."""
+    with mp.workdps(wdps):
+        X, Y, c0 = mp.mpf(X), mp.mpf(Y), mp.mpf(c0)
+        state = [mp.mpf(0), c0, mp.mpf(0), mp.mpf(0)] + [mp.mpf(0)] * 9 + [mp.mpf(1), mp.mpf(0), mp.mpf(0)]
+        for a, b, expr in linear_blade.segments(blade):
+            M = sp.lambdify(blade.var, expr, modules="mpmath")
+
+            def rhs(s, u, M=M):
+                sn, cs = mp.sin(u[0]), mp.cos(u[0])
+                out = [u[1] / M(s), X * sn - Y * cs, cs, sn]
+                for d, force in enumerate((sn, -cs, 0)):
+                    dphi, dmu = u[4 + 4 * d], u[5 + 4 * d]
+                    out += [dmu / M(s), force + (X * cs + Y * sn) * dphi, -sn * dphi, cs * dphi]
+                return out
+            state = mp.odefun(rhs, mp.mpf(sp.Rational(a)), state, tol=mp.mpf(10) ** -wdps)(mp.mpf(sp.Rational(b)))
+        return state
+
+
+def test_end_state_is_the_trigonometric_elastica():
+    """end_state carries cos φ and sin φ in its state (no sine at odefun's raised precision): its end and its
+    Jacobian are those of the elastica written with sin φ and cos φ, to the working precision, on a blade
+    whose M tapers and then jumps (the state passes the jump)."""
+    s = sp.Symbol("s", real=True)
+    M = sp.Piecewise((sp.Rational(1, 400) * (1 + 5 * s), s < sp.Rational(1, 20)), (sp.Rational(1, 800), True))
+    stepped = linear_blade.Blade(sp.Rational(1, 10), M, s)
+    wdps = 20
+    end = nonlinear_blade.end_state(stepped, "0.97", "0.04", "-0.006", wdps)
+    ref = _trigonometric_end(stepped, "0.97", "0.04", "-0.006", wdps)
+    with mp.workdps(wdps):
+        got = [end.theta, end.N, end.alpha, end.beta] + [end.jacobian[r][d] for d in range(3) for r in (2, 3, 0, 1)]
+        for g, w in zip(got, ref):
+            assert abs(g - w) <= mp.mpf(10) ** (2 - wdps) * (1 + abs(w))
+    # the loads bend the blade well beyond the linear range
+    assert abs(end.theta) > 0.05
+
+
 @pytest.mark.slow
 def test_amplitude_to_zero_gives_the_linear_period():
     """T(θ0) → 2π/n of the linear eigenproblem, with T/T_lin − 1 of order θ0² (fitted slope 2)."""

@@ -10,11 +10,11 @@
 - (106): the exact terms of (4)–(7) beyond the first approximation, evaluated with mpmath's sin and
   cos at a point scaled by p, against the series: residual of the next order.
 
-Cost: each nonlinear period is one collocation solve at four nodes (about 3.5 s CPU at 30 digits, on the
-precision ladder of pendsym.nonlinear_blade.orbit); the order checks use three amplitudes on one blade and a
+Cost: each nonlinear period is one collocation solve at four nodes (about 2.2 s CPU at 30 digits, on the
+precision ladder of pendsym.nonlinear_blade.orbit); the order checks use four amplitudes on one blade and a
 33-digit confirmation at the first, cached on disk by pendsym.nonlinear_blade.track and shared by (111),
-(112) and n°25's (64), (85) (one worker: the memoir's affinity group), about 13 s CPU cold in all.  α = λ − ½H2:
-three exact elastica on the tapered blade and a 36-digit confirmation, about 4 s.
+(112) and n°25's (64), (85) (one worker: the memoir's affinity group), about 12 s CPU cold in all.  α = λ − ½H2:
+four exact elastica on the tapered blade and a 36-digit confirmation, about 2.3 s.
 """
 from __future__ import annotations
 
