@@ -16,6 +16,7 @@ middle pieces, with SWITCHES and KNOTS) are the rules of :mod:`.series`.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
@@ -277,7 +278,30 @@ class FarForm:
         return self.apply(c, x)
 
 
+def one_exponential(form: sp.Expr | None, x: sp.Symbol) -> sp.Expr | None:
+    """form (rational in e^{−x/q}, from :func:`exp_form` or :func:`asymptotic_form`) with every
+    exp(−j x/q) written E^j and every expm1(−j x/q) written E^j − 1, E = e^{−x/q} one named unit:
+    one libm call where the form made up to six (F of (170): 61 calls of exp and expm1 above its
+    knots).  Where E^j ≤ ½, E^j − 1 loses nothing; the powers' roundings (j·½ ulp) count only in
+    the terms they multiply, corrections of relative size E^j.  Measured like the other far forms
+    (:func:`.leaves.leaf_form`); None when the form has no exponential of x or one that grows."""
+    if form is None:
+        return None
+    calls = [f for f in form.atoms(sp.exp, expm1) if f.has(x)]
+    ratios = [sp.simplify(f.args[0] / x) for f in calls]
+    if not calls or not all(r.is_Rational and r < 0 for r in ratios):
+        return None
+    q = math.lcm(*[int(r.q) for r in ratios])
+    E = Grouped(sp.exp(-x / q))
+    power = {f: int(-r * q) for f, r in zip(calls, ratios)}
+    return form.xreplace({f: (E ** power[f] if isinstance(f, sp.exp) else E ** power[f] - 1) for f in calls})
+
+
 FAR_FORMS: tuple[FarForm, ...] = (
+    # session 11: first, so that where they are as accurate (within PIECE_GAIN) the single exponential wins
+    FarForm("e^{{-{x}}} form in one exponential", lambda c, x: one_exponential(exp_form(c, x), x)),
+    FarForm("limit in 1/{x} plus e^{{-{x}}} remainder in one exponential",
+            lambda c, x: one_exponential(asymptotic_form(c, x), x)),
     FarForm("as derived", lambda c, x: c),
     FarForm("e^{{-{x}}} form", exp_form),
     FarForm("limit in 1/{x} plus e^{{-{x}}} remainder", asymptotic_form),
