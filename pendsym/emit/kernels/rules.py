@@ -293,8 +293,11 @@ def one_exponential(form: sp.Expr | None, x: sp.Symbol) -> sp.Expr | None:
         return None
     q = math.lcm(*[int(r.q) for r in ratios])
     E = Grouped(sp.exp(-x / q))
+
+    def pw(j: int) -> sp.Expr:        # E^j; above E^8 through E² (the printers call pow() above the 8th power)
+        return E**j if j <= 8 else Grouped(E**2) ** (j // 2) * E ** (j % 2)
     power = {f: int(-r * q) for f, r in zip(calls, ratios)}
-    return form.xreplace({f: (E ** power[f] if isinstance(f, sp.exp) else E ** power[f] - 1) for f in calls})
+    return form.xreplace({f: (pw(power[f]) if isinstance(f, sp.exp) else pw(power[f]) - 1) for f in calls})
 
 
 FAR_FORMS: tuple[FarForm, ...] = (
