@@ -54,17 +54,31 @@ def test_series_near_zero_holds_where_the_form_cancels():
 
 
 def test_far_forms_are_named_for_their_argument_and_keep_the_leaf():
-    assert [r.name("u") for r in kn.FAR_FORMS] == ["as derived", "e^{-u} form", "limit in 1/u plus e^{-u} remainder"]
+    assert [r.name("u") for r in kn.FAR_FORMS] == [
+        "limit in 1/u plus e^{-u} remainder in one exponential",
+        "as derived", "e^{-u} form", "limit in 1/u plus e^{-u} remainder"]
     c = 1 - 2 * sp.tanh(u / 2) / u
-    assert kn.FAR_FORMS[0](c, u) == c
+    assert kn.FAR_FORMS[1](c, u) == c
     with mp.workdps(50):
-        for r in kn.FAR_FORMS[1:]:
+        for r in kn.FAR_FORMS[:1] + kn.FAR_FORMS[2:]:
             form = r(c, u)
             assert form is not None and not form.has(sp.tanh), r.label
-            f = sp.lambdify([u], form, modules="math")
-            for v in (30.0, 700.0):
+            f = sp.lambdify([u], form.replace(lambda e: isinstance(e, kn.Grouped), lambda e: e.args[0]), modules="math")
+            for v in (3.0, 30.0, 700.0):
                 true = 1 - 2 * mp.tanh(mp.mpf(v) / 2) / v
                 assert _ulp(f(v), true) <= 4, (r.label, v)
+
+
+def test_one_exponential_calls_exp_once():
+    c = sp.tanh(u / 2) ** 2 / u**2 - 1 / (u**2 * sp.cosh(u / 2) ** 2)     # E = e^{−u/2}: E², (E² + 1)², E ± 1
+    form = rules.one_exponential(kn.exp_form(c, u), u)
+    assert form is not None and len(form.atoms(sp.exp)) == 1 and not form.has(sp.sinh, sp.tanh)
+    assert not any(type(f).__name__ == "expm1" for f in form.atoms(sp.Function))
+    f = sp.lambdify([u], form.replace(lambda e: isinstance(e, kn.Grouped), lambda e: e.args[0]), modules="math")
+    with mp.workdps(50):
+        for v in (6.0, 40.0, 600.0):
+            x = mp.mpf(v)
+            assert _ulp(f(v), mp.tanh(x / 2) ** 2 / x**2 - 1 / (x**2 * mp.cosh(x / 2) ** 2)) <= 4, v
 
 
 def test_vertex_form_keeps_the_skeleton_and_adds_two_leaves():

@@ -20,7 +20,7 @@ import sympy as sp
 
 from ...result import KernelArg
 from .measure import ulp_errors
-from .plan import Grouped
+from .plan import Grouped, Select
 from .printing import KernelPy
 from .rules import FAR_FORMS, PLAIN, SKELETONS, quadratic_vertex
 from .series import KNOTS, SERIES, SWITCHES, TAYLOR
@@ -158,7 +158,7 @@ def _in_double(form: sp.Expr, x: sp.Symbol) -> Callable[[float], float]:
     return sp.lambdify([x], form, modules=["math", {"math": math}], printer=KernelPy)
 
 
-def _taylor_candidates(piece: Callable, x, a, head, below, ser_desc, fname, far, fe, grid: _Grid,
+def _taylor_candidates(piece: Callable, x, a, heads, below, ser_desc, fname, far, fe, grid: _Grid,
                        first: int) -> list:
     """The candidates series + Taylor pieces up to a knot + far form above, for each switch;
     a further piece is not tried once the far form above the last knot is no worse.
@@ -173,7 +173,7 @@ def _taylor_candidates(piece: Callable, x, a, head, below, ser_desc, fname, far,
             mids.append(form)
             worst = max(worst, max(pe.values(), default=0.0))
             above = grid.worst(fe, lo=k, default=0.0)
-            pw = sp.Piecewise((head, x < s1), *[(f, x < e) for f, e in zip(mids, ends[1:])], (far, True))
+            pw = sp.Piecewise((heads[s1], x < s1), *[(f, x < e) for f, e in zip(mids, ends[1:])], (far, True))
             cands.append((max(worst, above), 2 + len(mids), first + len(cands), pw,
                           f"{ser_desc[s1]}, {TAYLOR.describe(ends)}, {fname} above"))
             if above <= worst:      # a further piece cannot lower the error
@@ -193,11 +193,14 @@ def leaf_form(c: sp.Expr, x: sp.Symbol, a: KernelArg) -> LeafForm:
         grid = _Grid(tuple(xs), tuple(ref(mp.mpf(v)) for v in xs))
         fars = [(rule.name(a.name), f) for rule in FAR_FORMS if (f := rule(c, x)) is not None]
         far_err = {name: grid.errors(_in_double(f, x)) for name, f in fars}
-        near = SERIES(c, x)
-        m, head = near if near else (0, None)
-        head_err = grid.errors(_in_double(head, x), hi=max(inside)) if near and inside else {}
-        below = {s1: grid.worst(head_err, hi=s1) for s1 in (inside if near else ())}
-        ser_desc = {s1: SERIES.describe(m, a.name, s1) for s1 in below}
+        lau = SERIES.coefficients(c, x)
+        m = lau[0] if lau else 0
+        heads, below, ser_desc = {}, {}, {}
+        for s1 in (inside if lau else ()):
+            # the series truncated for x < s1 (the terms it needs there), measured below s1
+            heads[s1], terms = SERIES.below(m, lau[1], x, s1)
+            below[s1] = grid.worst(grid.errors(_in_double(heads[s1], x), hi=s1), hi=s1)
+            ser_desc[s1] = SERIES.describe(m, a.name, s1, terms)
         cands = []     # (error, number of pieces, order, form, description)
         pieces: dict = {}
 
@@ -211,14 +214,41 @@ def leaf_form(c: sp.Expr, x: sp.Symbol, a: KernelArg) -> LeafForm:
             cands.append((max(fe.values()), 1, len(cands), far, fname))
             for s1 in below:
                 err = max(below[s1], grid.worst(fe, lo=s1))
-                cands.append((err, 2, len(cands), sp.Piecewise((head, x < s1), (far, True)),
+                cands.append((err, 2, len(cands), sp.Piecewise((heads[s1], x < s1), (far, True)),
                               f"{ser_desc[s1]}, {fname} above"))
         for fname, far in (fars if below and min(cd[0] for cd in cands) > GOOD_ENOUGH else ()):
-            cands += _taylor_candidates(piece, x, a, head, below, ser_desc, fname, far, far_err[fname], grid,
+            cands += _taylor_candidates(piece, x, a, heads, below, ser_desc, fname, far, far_err[fname], grid,
                                         len(cands))
     least = min(e for e, *_ in cands)
     err, _, _, form, desc = min((cd for cd in cands if cd[0] <= least + PIECE_GAIN), key=lambda cd: cd[1:3])
     return LeafForm(form, desc, round(err, 2))
+
+
+def conditions_as_selects(skeleton: sp.Expr, leaves: dict) -> sp.Expr:
+    """Each two-way Piecewise of the skeleton whose condition d > 0 (or d < 0) holds leaves written
+    as a :class:`.plan.Select` on d.
+
+    In a Piecewise condition SymPy folds the piecewise leaves out (piecewise_fold), so the kernel
+    recomputed every leaf inline in the test and again in the branch (K of (36): the root z's
+    test on the sign of p, 20 KB of C, ~1/2 of its time).  A Select's argument is not folded: its
+    leaves are named once, before the test (:mod:`.plan`), and each branch still evaluates only
+    its own expression.  The test is the same comparison in double (d > 0 or −d > 0)."""
+    hard = set(leaves)
+
+    def select(pw: sp.Piecewise) -> sp.Expr:
+        if len(pw.args) != 2 or pw.args[1].cond != sp.true:
+            return pw
+        (b, cond), (c, _) = pw.args
+        if not (cond.free_symbols & hard) or not isinstance(cond, (sp.StrictGreaterThan, sp.StrictLessThan)):
+            return pw
+        if cond.rhs == 0:
+            d = cond.lhs if isinstance(cond, sp.StrictGreaterThan) else -cond.lhs
+        elif cond.lhs == 0:
+            d = cond.rhs if isinstance(cond, sp.StrictLessThan) else -cond.rhs
+        else:
+            return pw
+        return Select(d, b, c)
+    return skeleton.replace(lambda e: isinstance(e, sp.Piecewise), select)
 
 
 def stable_forms(expr: sp.Expr, args: Sequence[KernelArg],
@@ -242,5 +272,6 @@ def stable_forms(expr: sp.Expr, args: Sequence[KernelArg],
             if lv[s] not in forms:
                 forms[lv[s]] = leaf_form(lv[s], x, a)
         notes = tuple(f"{sp.sstr(lv[s])[:60]}: {forms[lv[s]].desc} ({forms[lv[s]].max_ulp:g} ulp)" for s in used)
+        skel = conditions_as_selects(skel, lv)
         out.append((label, skel.xreplace({s: Grouped(forms[lv[s]].expr) for s in used}), notes))
     return out

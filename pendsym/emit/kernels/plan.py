@@ -78,11 +78,31 @@ def _const(sym: sp.Symbol, value: sp.Expr) -> Declaration:
     return Declaration(Variable(sym, type=real, attrs=(value_const,), value=value))
 
 
+def shared_exponentials(expr: sp.Basic) -> list:
+    """The units Grouped(exp(…)) that expr evaluates in two or more places (the one exponential of
+    several leaves' far forms, :func:`.rules.one_exponential`), sorted: each is computed once, before
+    the leaves, on every path (one libm call where F of (170) made ten; exp of a real double does
+    not fail, and it costs one call where no far form is taken)."""
+    counts: dict = {}
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, Grouped) and isinstance(e.args[0], sp.exp):
+            counts[e] = counts.get(e, 0) + 1
+            continue
+        stack += list(e.args)
+    return sorted((e for e, n in counts.items() if n > 1), key=sp.default_sort_key)
+
+
 def _steps(expr: sp.Expr, names: Iterator[sp.Symbol]) -> tuple[list, sp.Expr]:
-    """(statements, value): the leaves are named first (a Piecewise may compare them), then
-    every other always-evaluated Piecewise, then the calls of shared parts (each evaluated
-    once), then common subexpressions (SymPy cse)."""
+    """(statements, value): the exponentials several far forms share first, then the leaves (a
+    Piecewise may compare them), then every other always-evaluated Piecewise, then the calls of
+    shared parts (each evaluated once), then common subexpressions (SymPy cse)."""
     steps: list = []
+    hoisted = {e: next(names) for e in shared_exponentials(expr)}
+    for e, sym in hoisted.items():
+        steps.append(_const(sym, e.args[0]))
+    expr = expr.xreplace(hoisted)
     for kind in (Grouped, sp.Piecewise, AppliedUndef):
         named = {}
         for e in sorted(always_evaluated(expr, kind), key=sp.default_sort_key):

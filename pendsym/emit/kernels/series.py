@@ -10,6 +10,7 @@ integral (:func:`taylor_coeffs`).  :data:`SERIES` and :data:`TAYLOR` are the two
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
@@ -18,8 +19,11 @@ import sympy as sp
 
 SWITCHES = (0.125, 0.25, 0.5, 1.0, 1.5)   # candidate switch points of a leaf (sampled by the tests)
 KNOTS = (3.0, 5.5, 8.0, 10.5, 13.0, 15.5, 18.0, 20.5)   # ends of the middle Taylor pieces
-SERIES_SPAN = 64                           # orders kept beyond the leading one
-MID_TERMS = 48                             # terms of the middle Taylor piece
+SERIES_SPAN = 64                           # orders computed beyond the leading one
+MID_TERMS = 48                             # terms computed of the middle Taylor piece
+TRUNCATE = 2.0**-64                        # a term is kept unless the tail it starts is below this, relative
+                                           # to the value, everywhere on the piece (1/2048 ulp)
+TRUNCATE_GRID = 64                         # points of a piece on which the tail is bounded
 
 
 @functools.lru_cache(maxsize=None)
@@ -111,16 +115,87 @@ def split_constant(c, rest: sp.Expr) -> sp.Expr:
     return sp.Float(repr(hi), 17) + Grouped(sp.Float(mp.nstr(lo, 20), 20) + rest)
 
 
-def series_expr(m: int, coeffs: list, x: sp.Symbol) -> sp.Expr:
-    """x^m times the series in Horner form (in x² when the series is even), 20-digit coefficients;
-    the constant term split in two doubles (:func:`split_constant`)."""
+def needed_terms(cs: Sequence, r: float, centred: bool = False) -> int:
+    """The number of leading coefficients of Σ c_j y^j to keep on 0 ≤ y ≤ r (−r ≤ y ≤ r where
+    `centred`): the fewest n with Σ_{j≥n} |c_j| |y|^j ≤ TRUNCATE·|Σ c_j y^j| at every point of a grid
+    of the piece (at 40 digits).  The dropped tail then costs at most 1/2048 ulp: a series of 65
+    terms needs ~11 below u = 0.125, ~40 below 1.5."""
+    with mp.workdps(40):
+        c = [mp.mpf(v) if not isinstance(v, sp.Basic) else mp.mpf(sp.N(v, 40)) for v in cs]
+        ys = [mp.mpf(r) * i / TRUNCATE_GRID for i in range(1, TRUNCATE_GRID + 1)]
+        if centred:
+            ys += [-y for y in ys]
+        need = 1
+        for y in ys:
+            terms = [cj * y**j for j, cj in enumerate(c)]
+            total = abs(mp.fsum(terms))
+            tail = mp.mpf(0)
+            for j in range(len(c) - 1, 0, -1):          # the longest tail still below the tolerance
+                tail += abs(terms[j])
+                if tail > TRUNCATE * total:
+                    need = max(need, j + 1)
+                    break
+    return need
+
+
+@dataclass(frozen=True)
+class EstrinTail:
+    """The rule "Horner head, Estrin tail": Σ c_j w^j with its first `head` coefficients in Horner form and
+    the rest by Estrin's scheme (pairs c_j + c_{j+1} w, then pairs of those in w², w⁴ …; each power one
+    named product), where there are more than `longer` coefficients.
+
+    A Horner chain of n terms is n dependent multiply–adds (~6 cycles each at -O2 without FMA: 48 terms,
+    ~100 ns); Estrin's tree has log₂ n levels.  Its extra roundings are in the tail only, whose
+    magnitude is below (ratio of the terms)^head of the value: with head = 5 and a ratio ≤ 0.45 (a
+    Taylor piece at its ends), under 2 % of an ulp per ulp of the tail."""
+
+    head: int = 5
+    longer: int = 10
+
+    @staticmethod
+    def estrin(cs: Sequence[sp.Expr], w: sp.Expr) -> sp.Expr:
+        """Σ cs[i] w^i by Estrin's scheme (w a named unit)."""
+        from .plan import Grouped
+        cs = list(cs)
+        while len(cs) > 1:
+            cs = [cs[i] + cs[i + 1] * w if i + 1 < len(cs) else cs[i] for i in range(0, len(cs), 2)]
+            w = Grouped(w * w) if len(cs) > 1 else w
+        return cs[0]
+
+    def __call__(self, cs: Sequence[sp.Expr], w: sp.Expr) -> sp.Expr:
+        """Σ cs[i] w^i (cs: SymPy numbers)."""
+        cs = list(cs)
+        if not cs:
+            return sp.S.Zero
+        if len(cs) <= self.longer:
+            h = sp.S.Zero
+            for c in reversed(cs):
+                h = c + w * h
+            return h
+        h = self.estrin(cs[self.head:], w)
+        for c in reversed(cs[: self.head]):
+            h = c + w * h
+        return h
+
+
+HORNER = EstrinTail(head=10**9, longer=10**9)     # plain Horner (the form before session 11)
+ESTRIN = EstrinTail()
+
+
+def series_expr(m: int, coeffs: list, x: sp.Symbol, scheme: EstrinTail = HORNER) -> sp.Expr:
+    """x^m times the series (in x² when the series is even) evaluated by `scheme`, 20-digit
+    coefficients; the constant term split in two doubles (:func:`split_constant`)."""
+    from .plan import Grouped
     while coeffs and coeffs[-1] == 0:
         coeffs = coeffs[:-1]
     even = all(c == 0 for c in coeffs[1::2])
     cs, w = (coeffs[::2], x**2) if even else (coeffs, x)
-    h = sp.S.Zero
-    for c in reversed(cs[1:]):
-        h = sp.Float(sp.N(c, 20), 20) + w * h if c != 0 or h != 0 else h
+    if scheme is not HORNER and len(cs) - 1 > scheme.longer and even:
+        w = Grouped(w)                 # x² named once: the tail's powers are products of it
+    rest = [sp.Float(sp.N(c, 20), 20) if c != 0 else sp.S.Zero for c in cs[1:]]
+    while rest and rest[-1] == 0:
+        rest = rest[:-1]
+    h = scheme(rest, w)
     h = split_constant(cs[0], w * h) if cs and cs[0] != 0 and h != 0 else (
         sp.Float(sp.N(cs[0], 20), 20) + w * h if cs and cs[0] != 0 else w * h)
     return x**m * h
@@ -150,18 +225,20 @@ def taylor_coeffs(ref: Callable, m: int, lo: float, hi: float, terms: int = MID_
     return c, cs
 
 
-def taylor_expr(c: float, cs: list, m: int, x: sp.Symbol) -> sp.Expr:
-    """x^m times the Taylor polynomial about c in Horner form, 20-digit coefficients, the constant
+def taylor_expr(c: float, cs: list, m: int, x: sp.Symbol, scheme: EstrinTail = HORNER) -> sp.Expr:
+    """x^m times the Taylor polynomial about c evaluated by `scheme`, 20-digit coefficients, the constant
     term split in two doubles (:func:`split_constant`)."""
-    h = sp.S.Zero
+    from .plan import Grouped
     dx = x - sp.Float(c, 17)
-    for cf in reversed(cs[1:]):
-        h = sp.Float(mp.nstr(cf, 20), 20) + dx * h
+    if scheme is not HORNER and len(cs) - 1 > scheme.longer:
+        dx = Grouped(dx)               # x − c named once
+    h = scheme([sp.Float(mp.nstr(cf, 20), 20) for cf in cs[1:]], dx)
     return x**m * split_constant(cs[0], dx * h)
 
 
 def taylor_double(c: float, cs: list, m: int) -> Callable[[float], float]:
-    """The Taylor piece evaluated in double exactly as its printed form is (the same roundings)."""
+    """The Taylor piece in Horner form evaluated in double exactly as its printed form is (the same
+    roundings)."""
     fs = [float(mp.nstr(cf, 20)) for cf in reversed(cs[1:])]
     with mp.workdps(40):
         hi = float(mp.nstr(cs[0], 20))
@@ -178,34 +255,55 @@ def taylor_double(c: float, cs: list, m: int) -> Callable[[float], float]:
 
 @dataclass(frozen=True)
 class SeriesBelow:
-    """The rule "series below a switch": the leaf's Laurent series, `span` + 1 terms."""
+    """The rule "series below a switch": the leaf's Laurent series, `span` + 1 terms computed; with
+    `scheme` other than Horner (session 11), :meth:`below` keeps only the terms the switch needs
+    (:func:`needed_terms`) and evaluates them by `scheme`."""
 
     span: int = SERIES_SPAN
+    scheme: EstrinTail = HORNER
 
     def __call__(self, c: sp.Expr, x: sp.Symbol) -> tuple[int, sp.Expr] | None:
         """(m, form): the series x^m Σ a_j x^j in Horner form, or None."""
         lau = laurent(c, x, self.span)
         return None if lau is None else (lau[0], series_expr(lau[0], lau[1], x))
 
-    def describe(self, m: int, x: str, switch: float) -> str:
-        return f"series (x^{m}·{self.span + 1} terms) for {x} < {switch:g}"
+    def coefficients(self, c: sp.Expr, x: sp.Symbol) -> tuple[int, list] | None:
+        """(m, [a_0 … a_span]) of :func:`laurent`, or None."""
+        return laurent(c, x, self.span)
+
+    def below(self, m: int, coeffs: list, x: sp.Symbol, switch: float) -> tuple[sp.Expr, int]:
+        """(form, terms): the series truncated for 0 < x < switch, evaluated by `scheme`."""
+        n = needed_terms(coeffs, switch) if self.scheme is not HORNER else len(coeffs)
+        return series_expr(m, list(coeffs[:n]), x, self.scheme), n
+
+    def describe(self, m: int, x: str, switch: float, terms: int | None = None) -> str:
+        return f"series (x^{m}·{self.span + 1 if terms is None else terms} terms) for {x} < {switch:g}"
 
 
 @dataclass(frozen=True)
 class TaylorPieces:
-    """The rule "Taylor pieces between knots", `terms` terms each."""
+    """The rule "Taylor pieces between knots", `terms` terms each computed; with `scheme` other than
+    Horner (session 11), only the terms the piece needs (:func:`needed_terms`), evaluated by `scheme`."""
 
     terms: int = MID_TERMS
+    scheme: EstrinTail = HORNER
 
     def __call__(self, ref: Callable, m: int, lo: float, hi: float, x: sp.Symbol) -> tuple[sp.Expr, Callable]:
         """(form, the same in double) of the piece on [lo, hi]."""
         c0, cs = taylor_coeffs(ref, m, lo, hi, self.terms)
-        return taylor_expr(c0, cs, m, x), taylor_double(c0, cs, m)
+        if self.scheme is HORNER:
+            return taylor_expr(c0, cs, m, x), taylor_double(c0, cs, m)
+        cs = cs[: needed_terms(cs, (hi - lo) / 2, centred=True)]
+        form = taylor_expr(c0, cs, m, x, self.scheme)
+        from .printing import KernelPy
+        return form, sp.lambdify([x], form, modules=["math", {"math": math}], printer=KernelPy)
 
     def describe(self, ends: Sequence[float]) -> str:
         spans = ", ".join(f"[{lo:g}, {hi:g}]" for lo, hi in zip(ends, ends[1:]))
+        if self.scheme is not HORNER:
+            return f"Taylor (the terms of {self.terms} each piece needs, Estrin tail) on {spans}"
         return f"Taylor ({self.terms} terms) on {spans}"
 
 
-SERIES = SeriesBelow()
-TAYLOR = TaylorPieces()
+SERIES = SeriesBelow(scheme=ESTRIN)
+TAYLOR = TaylorPieces(scheme=ESTRIN)
