@@ -63,18 +63,22 @@ def test_a_kernel_off_by_3e_15_relative_fails():
 def test_the_arb_reference_is_mpmaths_at_every_digit_and_is_used_for_bessel_forms():
     """A cross product of Bessel functions as in the rhombus blade (x0 = 2u/q up to 6e8): the Arb form at
     60 digits equals mpmath's at 120 to its last digit (mpmath's own at 60 digits is off by 1.3e-56 at
-    x0 = 1.8e5), κ too; a form with a Piecewise is left to MPFR or mpmath."""
+    x0 = 1.8e5), and the audit's reference value to its 45 proven digits; κ from the Arb form too; a
+    form with a Piecewise is left to MPFR or mpmath."""
+    from pendsym.audit.reference import ARB_TRUTH_DIGITS, arb_form
     expr = (sp.besselj(1, 2 * u / q) * sp.bessely(0, u * sp.sqrt(2 * q + 4) / q)
             - sp.EulerGamma * sp.bessely(1, 2 * u / q) * sp.besselj(0, u * sp.sqrt(2 * q + 4) / q)) / u
     f, cond, engine = run.fast_reference(expr, (u, q), (1.0, 1e-3))
-    assert engine == "arb"
+    assert engine == "arb" and ARB_TRUTH_DIGITS >= 30
     f_mp, cond_mp = reference(expr, [u, q])
+    every = arb_form(expr, (u, q), f_mp)
     for p in ((1.9, 2.1e-5), (3.14, 1e-8), (0.05, 2.5)):
         with mp.workdps(120):
             b = f_mp(*map(mp.mpf, p))
         with mp.workdps(60):
-            a = f(*map(mp.mpf, p))
+            a, c = every(*map(mp.mpf, p)), f(*map(mp.mpf, p))
             assert abs(a - b) <= mp.mpf(10) ** -59 * abs(b), (p, a, b)
+            assert abs(c - b) <= mp.mpf(10) ** -ARB_TRUTH_DIGITS * abs(b), (p, c, b)
     with mp.workdps(60):
         assert abs(cond(mp.mpf(1.9), mp.mpf(2.1e-5)) / cond_mp(mp.mpf(1.9), mp.mpf(2.1e-5)) - 1) < 1e-20
     assert run.fast_reference(sp.Piecewise((sp.besselj(0, u), u < 1), (u, True)), (u,), (0.5,))[2] == "mpmath"

@@ -80,7 +80,7 @@ def c_ns(lib: ctypes.CDLL, job) -> tuple[float, float]:
     return round(min(runs), 1), round(statistics.median(runs), 1)
 
 
-NUMPY_BUDGET = 0.1       # seconds a numpy timing call may take (10**6 elements, or fewer for a heavy kernel)
+NUMPY_BUDGET = 0.03      # seconds a numpy timing call may take (10**6 elements, or fewer for a heavy kernel)
 
 
 def numpy_ns(job) -> tuple[float, float, int]:

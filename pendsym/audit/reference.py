@@ -89,7 +89,8 @@ def mpfr_form(expr: sp.Expr, syms, fallback: Callable) -> Callable | None:
 ARB_FUNCTIONS = {"besselj": "bessel_j", "bessely": "bessel_y", "besseli": "bessel_i", "besselk": "bessel_k"}
 ARB_UNARY = ("sin", "cos", "tan", "sinh", "cosh", "tanh", "exp", "log", "sqrt", "atan", "asin", "acos",
              "asinh", "acosh", "atanh")
-ARB_GUARD = 32           # bits beyond the working precision at which a ball is first evaluated
+ARB_GUARD = 64           # bits beyond the target at which a ball is first evaluated
+ARB_TRUTH_DIGITS = 45    # digits proven of a reference value (κ's differences: every digit of the working precision)
 ARB_TRIES = 4            # each try doubles the extra bits; then mpmath's form
 
 
@@ -128,10 +129,12 @@ def _arb_namespace() -> dict:
             **{k: unary(k) for k in ARB_UNARY}, **{k: bessel(v) for k, v in ARB_FUNCTIONS.items()}}
 
 
-def arb_form(expr: sp.Expr, syms, fallback: Callable) -> Callable | None:
+def arb_form(expr: sp.Expr, syms, fallback: Callable, digits: int | None = None) -> Callable | None:
     """expr as a function of mpmath numbers evaluated in Arb ball arithmetic, its value returned as an
     mpmath mpf whose every bit at mpmath's working precision is proven (the ball's radius is below
-    2^-prec of its midpoint); None where python-flint is missing, or expr holds a Float, a Piecewise, a
+    2^-prec of its midpoint), or only its first `digits` digits where fewer (the ball's radius is then
+    below 10^-digits of its midpoint: the digits of a reference value need no guard against cancellation
+    when they are proven); None where python-flint is missing, or expr holds a Float, a Piecewise, a
     relation, or a function this form does not map.  Where the ball will not shrink (a value that is 0
     or nearly) or is not finite, the point is evaluated by `fallback`, mpmath's form."""
     if flint is None:
@@ -145,7 +148,7 @@ def arb_form(expr: sp.Expr, syms, fallback: Callable) -> Callable | None:
                                          "allow_unknown_functions": True}))
 
     def f(*xs):
-        target = mp.mp.prec
+        target = mp.mp.prec if digits is None else min(mp.mp.prec, int(digits * 3.33) + 1)
         old = flint.ctx.prec
         try:
             for k in range(ARB_TRIES):
@@ -201,8 +204,10 @@ def fast_reference(expr: sp.Expr, syms, probe: Sequence[float]) -> tuple[Callabl
     digits); else mpmath's (:func:`reference`)."""
     f_mp, cond_mp = reference(expr, list(syms))
     f, engine = mpfr_form(expr, syms, f_mp), "mpfr"
+    cond = None
     if f is None:
-        f, engine = arb_form(expr, syms, f_mp), "arb"
+        f, engine = arb_form(expr, syms, f_mp, ARB_TRUTH_DIGITS), "arb"
+        cond = f and condition(arb_form(expr, syms, f_mp))
     if f is None:
         return f_mp, cond_mp, "mpmath"
     with mp.workdps(60):
@@ -211,4 +216,4 @@ def fast_reference(expr: sp.Expr, syms, probe: Sequence[float]) -> tuple[Callabl
             same = mp.isfinite(b) and abs(a - b) <= mp.mpf(10) ** -MPFR_AGREE * max(abs(b), mp.mpf(10) ** -300)
         except (ZeroDivisionError, ValueError, OverflowError, TypeError):
             same = False
-    return (f, condition(f), engine) if same else (f_mp, cond_mp, "mpmath")
+    return (f, cond or condition(f), engine) if same else (f_mp, cond_mp, "mpmath")
