@@ -26,7 +26,7 @@ import numpy
 GUARD = re.compile(r"if not (\S+) <= (\w+) <= (\S+):")
 SWITCH = re.compile(r"\((\w+) [<>]=? (-?[0-9][0-9.e+-]*)\)")
 ARRAY_POINTS = 10**6
-PROBE = 10**4          # elements of the call that sizes a timed array to a budget
+PROBE = 10**3          # elements of the call that sizes a timed array to a budget (and the fewest timed)
 REPEATS = 5
 
 
