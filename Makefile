@@ -57,7 +57,8 @@ bench: $(STAMP) bench-derive
 	$(BIN)/python -m pendsym.scenes.bench --out generated/bench
 
 # every generated kernel, as emitted (C and Python), on >= 20,000 points with an adversarial search
-# (docs/kernel-accuracy.md); fails when a kernel is over the bound.  Needs the cache of make derive.
+# (docs/kernel-accuracy.md); fails (exit 1, last line "audit: FAILED: …") when a kernel is over the bound.
+# Over the cores (PENDSYM_WORKERS); ~230-310 s of CPU for 81 kernels in session 11.  Needs the cache of make derive.
 audit: $(STAMP)
 	$(BIN)/python -m pendsym.audit --generated generated --out generated/audit
 

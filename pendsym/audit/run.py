@@ -26,14 +26,11 @@ from __future__ import annotations
 import argparse
 import ctypes
 import heapq
-import importlib.util
 import json
 import math
 import random
 import re
 import shutil
-import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -53,6 +50,7 @@ from ..emit.kernels.measure import reference
 from ..result import KernelArg
 from . import arrays as ar
 from . import points as pt
+from .code import _load_py, c_function, c_ns, compile_memoir, numpy_ns
 from .reference import fast_reference
 
 LIMIT_AT = 1e-80         # the reference at 0 of an argument accepted down to 0: the form here
@@ -61,9 +59,6 @@ CLIMB_STARTS = 8         # the worst points the search starts from
 CLIMB_BUDGET = 1_200     # evaluations of the search, over its starts
 CONFIRM_DIGITS = 60      # more digits for a point whose error exceeds the bound
 TINY_POINTS = 64         # points in (0, lo) of an argument accepted down to 0 (each needs up to 2,600 digits)
-TIME_POINTS = 4096       # random points of a timing run
-TIME_REPEATS = 5
-CC = ("cc", "-std=c99", "-O2", "-fPIC", "-shared")
 
 
 @dataclass(frozen=True)
@@ -93,6 +88,7 @@ class Judge:
         self.job = job
         probe = tuple(math.sqrt(a.lo * a.hi) if a.log and a.lo > 0 else (a.lo + a.hi) / 2 for a in job.args)
         self.f, self.cond, self.engine = fast_reference(job.expr, job.syms, probe)
+        self.py_values: dict[tuple, float] = {}     # the scalar Python kernel's value at each point measured
 
     def truth(self, p: tuple, extra: int = 0):
         at = [v if v != 0 or not self.zero_limit(i) else LIMIT_AT for i, v in enumerate(p)]
@@ -173,7 +169,8 @@ class Judge:
     def errors(self, p: tuple, extra: int = 0) -> tuple[float, float]:
         """(Python ulp, C ulp) at p."""
         parts = self.split(self.truth(p, extra))
-        return self._ulp(self._call(self.job.py, p), parts), self._ulp(self._call(self.job.c, p), parts)
+        py = self.py_values[p] = self._call(self.job.py, p)
+        return self._ulp(py, parts), self._ulp(self._call(self.job.c, p), parts)
 
     def scaled(self, p: tuple, floor: float = -1.0, known: tuple | None = None) -> tuple[float, float, float, float, float]:
         """(Python ulp, C ulp, κ, Python scaled, C scaled); κ only where the error could beat `floor`
@@ -268,10 +265,11 @@ def far_points(job: Job, rng_seed: str) -> list[tuple]:
     return out
 
 
-def audit_one(job: Job, points: int = POINTS) -> dict:
+def audit_one(job: Job, points: int | None = None) -> dict:
     """The audit of one kernel (run in a worker): its figures and its worst point (`points`: at
-    least so many, the search included; fewer than POINTS only for a quick measure)."""
+    least so many, the search included; POINTS unless given, fewer only for a quick measure)."""
     start = time.process_time()
+    points = POINTS if points is None else points
     judge = Judge(job)
     params = [kn.identifier(a.name) for a in job.args]
     hard = (pt.hard_points(job.args, params, job.code, job.expr, job.syms, job.name) + tiny_points(job, job.name)
@@ -338,85 +336,11 @@ def reference_check(judge: Judge, top: tuple) -> dict:
     """The worst point's errors again against mpmath's own form (:func:`reference`) at CHECK_DIGITS more
     digits: an independent evaluation of the reference, which must agree to 1e-6 ulp."""
     again = Judge.__new__(Judge)
-    again.job, again.engine = judge.job, "mpmath"
+    again.job, again.engine, again.py_values = judge.job, "mpmath", {}
     again.f, again.cond = reference(judge.job.expr, list(judge.job.syms))
     e_py, e_c = again.errors(top[1], CHECK_DIGITS)
     agrees = all((a == b) or abs(a - b) <= 1e-6 * max(1.0, abs(b)) for a, b in ((e_py, top[2]), (e_c, top[3])))
     return {"engine": judge.engine, "checked_with": f"mpmath, +{CHECK_DIGITS} digits", "agrees": agrees}
-
-
-# ----------------------------------------------------------------- the emitted code, loaded as a user would
-def _load_py(path: Path):
-    spec = importlib.util.spec_from_file_location(f"audited_{path.stem}", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def timing_source(memoir: str, kernels: Sequence[tuple[str, int]]) -> str:
-    """A translation unit apart from the kernels' that times each of them on an array of points."""
-    out = ["#define _POSIX_C_SOURCE 199309L", "#include <time.h>", f'#include "{memoir}.h"', ""]
-    for name, n in kernels:
-        call = ", ".join(f"x[{n}*i+{j}]" for j in range(n))
-        out.append(f"""double time_{name}(const double *x, long n, long reps)
-{{
-    volatile double sink = 0.0;
-    double acc = 0.0;
-    struct timespec a, b;
-    clock_gettime(CLOCK_MONOTONIC, &a);
-    for (long r = 0; r < reps; ++r)
-        for (long i = 0; i < n; ++i)
-            acc += {name}({call});
-    clock_gettime(CLOCK_MONOTONIC, &b);
-    sink = acc;
-    (void)sink;
-    return ((b.tv_sec - a.tv_sec) * 1e9 + (b.tv_nsec - a.tv_nsec)) / ((double)reps * n);
-}}
-""")
-    return "\n".join(out)
-
-
-def compile_memoir(generated: Path, memoir: str, kernels: Sequence[tuple[str, int]], work: Path) -> ctypes.CDLL:
-    """generated/c/<memoir>.c and a timing unit, each its own translation unit, into one library."""
-    timing = work / f"{memoir}_timing.c"
-    timing.write_text(timing_source(memoir, kernels))
-    lib = work / f"lib{memoir}.so"
-    done = subprocess.run([*CC, "-I", str(generated / "c"), "-o", str(lib), str(generated / "c" / f"{memoir}.c"),
-                           str(timing), "-lm"], capture_output=True, text=True)
-    if done.returncode:
-        raise RuntimeError(f"cc failed on {memoir}: {done.stderr.strip()[:2000]}")
-    return ctypes.CDLL(str(lib), use_errno=True)
-
-
-def c_function(lib: ctypes.CDLL, name: str, n: int) -> Callable:
-    fn = getattr(lib, name)
-    fn.restype = ctypes.c_double
-    fn.argtypes = [ctypes.c_double] * n
-    return fn
-
-
-def c_ns(lib: ctypes.CDLL, job: Job) -> tuple[float, float]:
-    """(min, median) ns per call of the C kernel over TIME_REPEATS runs on random points of its domain."""
-    pts = pt.random_points(job.args, job.name + ":time", TIME_POINTS)
-    flat = (ctypes.c_double * (len(pts) * len(job.args)))(*[v for p in pts for v in p])
-    fn = getattr(lib, f"time_{job.name}")
-    fn.restype = ctypes.c_double
-    fn.argtypes = [ctypes.c_void_p, ctypes.c_long, ctypes.c_long]
-    fn(flat, len(pts), 2)                                   # warm up, and the reps for ~2 ms
-    reps = max(1, int(2e6 / max(1.0, fn(flat, len(pts), 1) * len(pts))))
-    runs = [fn(flat, len(pts), reps) for _ in range(TIME_REPEATS)]
-    return round(min(runs), 1), round(statistics.median(runs), 1)
-
-
-NUMPY_BUDGET = 0.1       # seconds a numpy timing call may take (10**6 elements, or fewer for a heavy kernel)
-
-
-def numpy_ns(job: Job) -> tuple[float, float, int]:
-    """(min, median, elements) ns per element of the Python kernel on numpy arrays of up to
-    ar.ARRAY_POINTS random points of its declared domain (log-uniform for a geometric argument),
-    over ar.REPEATS calls."""
-    return ar.ns_per_element(job.py, [(a.name, a.lo, a.hi, a.log) for a in job.args], job.name,
-                             budget=NUMPY_BUDGET)
 
 
 def jobs(generated: Path, work: Path, only: Sequence[str] = ()) -> tuple[dict[str, Job], dict[str, ctypes.CDLL]]:
@@ -442,6 +366,13 @@ def jobs(generated: Path, work: Path, only: Sequence[str] = ()) -> tuple[dict[st
             out[name] = Job(name, memoir, rid, args, built[rid].derived, syms, getattr(mod, name),
                             c_function(lib, name, len(args)), text, accepted(text, name, args))
     return out, libs
+
+
+def cost(job: Job) -> tuple:
+    """The order in which kernels go to the workers, the costliest first (so that the last to finish is a
+    cheap one): the forms with a function MPFR lacks (Bessel's: an Arb or mpmath reference), then by size."""
+    special = bool(job.expr.atoms(sp.besselj, sp.bessely, sp.besseli, sp.besselk))
+    return special, sp.count_ops(job.expr) * len(job.args)
 
 
 # ----------------------------------------------------------------- report
@@ -489,18 +420,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     generated, out = Path(ns.generated), Path(ns.out)
     with tempfile.TemporaryDirectory() as tmp:
         todo, libs = jobs(generated, Path(tmp), ns.only)
-        ids = sorted(todo, key=lambda n: -sp.count_ops(todo[n].expr) * len(todo[n].args))
-        results = dict(zip(ids, schedule.per_result(todo, ids, audit_one)))
+        ids = sorted(todo, key=lambda n: cost(todo[n]), reverse=True)
+
+        def measure(job: Job) -> dict:
+            """The audit of one kernel, then its timings (in the same worker: the kernels' timings are
+            spread over the cores like their audits)."""
+            row = audit_one(job)
+            if not ns.no_timing:
+                start = time.process_time()
+                row["c_ns"] = list(c_ns(libs[job.memoir], job))
+                row["numpy_ns"] = list(numpy_ns(job)) if row.get("numpy") else None
+                row["timing_cpu_s"] = round(time.process_time() - start, 1)
+            return row
+        results = dict(zip(ids, schedule.per_result(todo, ids, measure)))
         rows = [results[n] for n in todo]
-        if not ns.no_timing:
-            for r in rows:
-                r["c_ns"] = list(c_ns(libs[r["memoir"]], todo[r["kernel"]]))
-                r["numpy_ns"] = list(numpy_ns(todo[r["kernel"]])) if r.get("numpy") else None
     out.mkdir(parents=True, exist_ok=True)
     (out / "audit.json").write_text(json.dumps({"bound": kn.BOUND, "kernels": rows}, indent=1) + "\n")
     (out / "audit.md").write_text(table(rows))
     bad = over(rows)
-    cpu = time.process_time() - c0 + sum(r["cpu_s"] for r in rows) * (schedule.can_fork())
+    cpu = time.process_time() - c0 + sum(r["cpu_s"] + r.get("timing_cpu_s", 0.0) for r in rows) * (schedule.can_fork())
     print(f"audit: {len(rows)} kernels, {sum(r['points'] for r in rows)} points, "
           f"{time.monotonic() - t0:.0f} s wall, ~{cpu:.0f} s CPU; written to {out}")
     for r in bad:
@@ -509,4 +447,15 @@ def main(argv: Sequence[str] | None = None) -> int:
               f"numpy {(r.get('numpy') or {}).get('worst_scaled', math.nan):.3g} "
               f"at {_fmt_point(r['args'], r['worst_at'])}" + (f"; outside the domain: {r['outside'][:3]}" if r.get("outside") else "")
               + ("" if r.get("reference", {}).get("agrees", True) else "; the mpmath check of the reference disagrees"))
+    print(summary(rows, bad))
     return 1 if bad else 0
+
+
+def summary(rows: Sequence[dict], bad: Sequence[dict]) -> str:
+    """The audit's last line: its verdict, one line."""
+    if bad:
+        return (f"audit: FAILED: {len(bad)} of {len(rows)} kernels over {kn.BOUND:g} ulp × max(1, κ) or off the "
+                f"contract: {', '.join(r['kernel'] for r in bad)}")
+    worst = max(rows, key=lambda r: r["worst_scaled"], default=None)
+    return (f"audit: passed: {len(rows)} kernels within {kn.BOUND:g} ulp × max(1, κ)"
+            + (f" (worst {worst['worst_scaled']:.3g}, {worst['kernel']})" if worst else ""))
