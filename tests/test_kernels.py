@@ -121,6 +121,31 @@ def test_the_swing_time_takes_numpy_arrays_with_the_same_values(tmp_path):
         py.swing_time_agm(numpy.array([1.0]), numpy.array([-1.0]))
 
 
+def test_the_swing_time_on_arrays_of_several_blocks_is_the_scalar_path_bit_for_bit(tmp_path):
+    """The array path works in blocks of BLOCK elements in reused buffers: over several blocks (the last one
+    short), with k broadcast as an array of another shape, and for a 0-d alpha, every value is the scalar
+    kernel's, bit for bit."""
+    import numpy
+    from pendsym import stages
+    texts = stages.pendulum_kernels(tmp_path)
+    path = tmp_path / "python" / "pendulum.py"
+    path.parent.mkdir(parents=True)
+    path.write_text(texts[path])
+    spec = importlib.util.spec_from_file_location("p_blocks", path)
+    py = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(py)
+    rng = numpy.random.default_rng(20261125)
+    alphas = rng.uniform(0.0, 3.0, 2 * py.BLOCK + 7)
+    ks = numpy.array([[0.7], [2.5]])
+    got = py.swing_time_agm(alphas, ks)
+    assert got.shape == (2, alphas.size)
+    for row, kv in zip(got, ks[:, 0]):
+        picks = numpy.concatenate([numpy.arange(5), rng.integers(0, alphas.size, 200), alphas.size - numpy.arange(1, 6)])
+        assert all(row[i] == py.swing_time_agm(float(alphas[i]), float(kv)) for i in picks)
+    zero_d = py.swing_time_agm(numpy.array(1.25), 1.0)
+    assert numpy.shape(zero_d) == () and float(zero_d) == py.swing_time_agm(1.25, 1.0)
+
+
 def test_withheld_kernels_are_over_the_bound_and_emitted_ones_within():
     """pendsym.derive emits a kernel only within kn.BOUND; a kernel over it is withheld."""
     from pendsym import derive
