@@ -154,3 +154,190 @@ def jobs_by_affinity(ids: Sequence[str], groups: Sequence[Sequence[str]]) -> lis
         placed.update(job)
         out.append(job)
     return out
+
+
+# ----------------------------------------------------------------- a DAG of jobs, here and in one helper
+def dag_jobs(order: Sequence[str], group: Mapping[str, str],
+             deps: Mapping[str, Sequence[str]]) -> tuple[dict[str, tuple[str, ...]], dict[str, frozenset]]:
+    """The jobs of a DAG of items: the items of one group (``group[item]``) are one job, and groups that
+    depend on each other both ways (a cycle between groups) are merged into one.  Returns
+    ({job: its items in ``order``}, {job: the jobs it waits for}), the jobs in an order that puts each after
+    those it waits for (ties by their first item in ``order``).  ``order`` must put every item after its deps."""
+    first = {}
+    for i in order:
+        first.setdefault(group[i], len(first))
+    after_g: dict[str, set] = {g: set() for g in first}
+    for i in order:
+        after_g[group[i]].update(group[d] for d in deps[i] if group[d] != group[i])
+    comp = _strong_components(list(first), after_g)
+    name = {g: min(comp[g], key=first.__getitem__) for g in first}
+    after: dict[str, set] = {}
+    for g, ds in after_g.items():
+        after.setdefault(name[g], set()).update(name[d] for d in ds if name[d] != name[g])
+    items: dict[str, list] = {}
+    for i in order:
+        items.setdefault(name[group[i]], []).append(i)
+    placed: list[str] = []
+    done: set = set()
+    pending = sorted(items, key=lambda j: order.index(items[j][0]))
+    while pending:                          # Kahn's algorithm, ties by the first item's place
+        j = next(j for j in pending if after[j] <= done)
+        pending.remove(j)
+        placed.append(j)
+        done.add(j)
+    return {j: tuple(items[j]) for j in placed}, {j: frozenset(after[j]) for j in placed}
+
+
+def _strong_components(nodes: list, edges: Mapping[str, set]) -> dict[str, frozenset]:
+    """Each node's strongly connected component (Tarjan, iterative)."""
+    index: dict = {}
+    low: dict = {}
+    stack: list = []
+    on_stack: set = set()
+    out: dict = {}
+    for root in nodes:
+        if root in index:
+            continue
+        work = [(root, iter(sorted(edges[root])))]
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        on_stack.add(root)
+        while work:
+            v, it = work[-1]
+            w = next(it, None)
+            if w is not None:
+                if w not in index:
+                    index[w] = low[w] = len(index)
+                    stack.append(w)
+                    on_stack.add(w)
+                    work.append((w, iter(sorted(edges[w]))))
+                elif w in on_stack:
+                    low[v] = min(low[v], index[w])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[v])
+            if low[v] == index[v]:
+                members = []
+                while True:
+                    w = stack.pop()
+                    on_stack.discard(w)
+                    members.append(w)
+                    if w == v:
+                        break
+                comp = frozenset(members)
+                out.update((w, comp) for w in members)
+    return out
+
+
+def critical_rank(jobs: Mapping[str, Sequence[str]], after: Mapping[str, frozenset],
+                  weight: Callable[[str], float]) -> dict[str, float]:
+    """Each job's weight plus the heaviest chain of the jobs that wait for it (its priority in a list
+    schedule: the longest remaining path starts first)."""
+    waiting: dict[str, list] = {j: [] for j in jobs}
+    for j, ds in after.items():
+        for d in ds:
+            waiting[d].append(j)
+    rank: dict[str, float] = {}
+    for j in reversed(list(jobs)):
+        rank[j] = weight(j) + max((rank[k] for k in waiting[j]), default=0.0)
+    return rank
+
+
+def over_dag(jobs: Sequence[str], after: Mapping[str, frozenset], here: Callable[[str, Callable[[], None]], None],
+             there: Callable[[str, object], object], send: Callable[[str], object],
+             receive: Callable[[str, object], None], pick: Callable[[list, str | None], str]) -> dict[str, str]:
+    """Run a DAG of jobs on two cores: in this process and in one forked helper, each job as soon as the
+    jobs it waits for are done.
+
+    ``here(job, poll)`` runs a job in this process and calls ``poll()`` between its steps (the helper's
+    reply is then taken, and the helper given its next job, without waiting for this job to end);
+    ``there(job, payload)`` runs in the helper (forked at the start, it keeps its state from job to job)
+    and returns a plain value; ``send(job)`` makes the payload in this process when the job goes to the
+    helper (what it lacks), and ``receive(job, value)`` takes the helper's value here.
+    ``pick(ready, last)`` chooses among the ready jobs for a core whose last job was ``last``.
+    Without fork (or with PENDSYM_WORKERS=1) every job runs here, in the order of ``jobs``.
+    Returns {job: "here" | "there"}."""
+    where: dict[str, str] = {}
+    if not can_fork():
+        for j in jobs:
+            here(j, lambda: None)
+            where[j] = "here"
+        return where
+    ctx = multiprocessing.get_context("fork")
+    conn, child_end = ctx.Pipe(duplex=True)
+    parent = os.getpid()
+
+    def serve():
+        _die_with_parent(parent)
+        _ignore_sigint()
+        conn.close()
+        while True:
+            msg = child_end.recv()
+            if msg is None:
+                return
+            try:
+                child_end.send((True, there(*msg)))
+            except BaseException as exc:  # reported in the parent
+                child_end.send((False, f"{type(exc).__name__}: {exc}"))
+                return
+    proc = ctx.Process(target=serve, daemon=True)
+    with _sigint_held():
+        proc.start()
+    child_end.close()
+    done: set = set()
+    started: set = set()
+    state = {"there": None, "last_there": None, "last_here": None}
+
+    def ready() -> list:
+        return [j for j in jobs if j not in started and after[j] <= done]
+
+    def dispatch() -> None:
+        if state["there"] is None:
+            r = ready()
+            if r:
+                j = pick(r, state["last_there"])
+                started.add(j)
+                conn.send((j, send(j)))
+                state["there"] = j
+
+    def collect(block: bool) -> None:
+        j = state["there"]
+        if j is None or not (block or conn.poll()):
+            return
+        try:
+            ok, value = conn.recv()
+        except EOFError:
+            raise RuntimeError("the build helper died") from None
+        if not ok:
+            raise RuntimeError(f"the build helper failed on {j}: {value}")
+        receive(j, value)
+        done.add(j)
+        where[j] = "there"
+        state["there"], state["last_there"] = None, j
+        dispatch()
+
+    try:
+        while len(done) < len(jobs):
+            dispatch()
+            r = ready()
+            if r:
+                j = pick(r, state["last_here"])
+                started.add(j)
+                here(j, lambda: collect(False))
+                done.add(j)
+                where[j] = "here"
+                state["last_here"] = j
+            elif state["there"] is not None:
+                collect(True)
+            else:
+                raise RuntimeError("no job can start: the jobs wait for each other")
+        conn.send(None)
+        proc.join()
+    except BaseException:
+        proc.kill()         # Ctrl-C or a failed job: the helper does not outlive this call
+        proc.join()
+        raise
+    finally:
+        conn.close()
+    return where

@@ -20,7 +20,7 @@ from typing import Callable, Mapping
 
 import sympy as sp
 
-from . import cache, figure, keys, pipeline, registry, schedule
+from . import cache, codec, figure, keys, pipeline, registry, schedule
 from .emit import files, kernels as kn, latex
 from .emit.kernels.compile import emitted_py
 from .io import content_hash, write_atomic
@@ -43,6 +43,7 @@ class Plan:
     order: tuple[str, ...]
     keys: Mapping[str, str]
     emitter: str
+    sections: Mapping[str, str] = dataclasses.field(default_factory=dict)   # id → its section's module
 
     def key(self, kind: str, rid: str) -> str:
         return keys.digest((kind, self.level if kind == "assessed" else "", self.keys[rid]))
@@ -90,7 +91,7 @@ def plan(level: str) -> Plan:
     section = {s.id: sec.module for m in registry.memoirs().values() for sec in m.sections for s in sec.specs}
     roots = ("pendsym", *registry.packages())
     ks = keys.result_keys(section, {i: specs[i].deps for i in order}, order, roots)
-    return Plan(level, tuple(registry.memoirs()), specs, order, ks, keys.emitter_hash())
+    return Plan(level, tuple(registry.memoirs()), specs, order, ks, keys.emitter_hash(), section)
 
 
 # ----------------------------------------------------------------- build
@@ -99,9 +100,10 @@ def _forms(spec: Spec, built: Mapping[str, Result]) -> tuple[sp.Basic, sp.Basic 
     return r.derived, r.printed
 
 
-def _build_ids(pl: Plan, ids: list[str], built: dict, keep: bool = True) -> list[str]:
+def _build_ids(pl: Plan, ids: list[str], built: dict, keep: bool = True,
+               between: Callable[[], None] = lambda: None) -> list[str]:
     """Results of ids (dependencies first) into ``built``, their forms from the cache or built here
-    (and stored, if ``keep``); the ids built anew."""
+    (and stored, if ``keep``); the ids built anew.  ``between()`` is called after each one."""
     fresh = []
     for rid in ids:
         spec = pl.specs[rid]
@@ -110,30 +112,89 @@ def _build_ids(pl: Plan, ids: list[str], built: dict, keep: bool = True) -> list
         built[rid] = Result(spec=spec, derived=derived, printed=printed, deps={d: built[d] for d in spec.deps})
         if computed:
             fresh.append(rid)
+        between()
     return fresh
 
 
-def _forms_of(pl: Plan, ids: list[str]) -> tuple[dict, list[str]]:
-    built: dict[str, Result] = {}
-    fresh = _build_ids(pl, ids, built)
-    return {i: (built[i].derived, built[i].printed) for i in ids}, fresh
+def _chapter(pl: Plan, rid: str) -> str:
+    """The sub-package of its memoir that a Result's section lives in (the section itself when it is a
+    module of the memoir's package): the affinity of the build's jobs."""
+    memoir = pl.specs[rid].memoir
+    modules = {pl.sections[i] for i in pl.order if pl.specs[i].memoir == memoir}
+    prefix = os.path.commonprefix([m + "." for m in modules]).rpartition(".")[0]
+    rest = pl.sections[rid][len(prefix):].lstrip(".")
+    return f"{prefix}.{rest.split('.')[0]}" if rest else pl.sections[rid]
 
 
 def build(pl: Plan, log: Log) -> dict[str, Result]:
-    """Every Result.  The memoir with the most Results is built here (its derivation caches stay
-    warm for the forked checks) while a forked process builds the others."""
-    start = time.monotonic()
-    home = max(pl.memoirs, key=lambda m: sum(1 for i in pl.order if pl.specs[i].memoir == m))
-    away = [i for i in pl.order if pl.specs[i].memoir != home]
+    """Every Result.  Each section is a job (sections that depend on each other both ways are one); the
+    jobs run on two cores, here and in a forked helper, each once the jobs it depends on are done: the
+    longest chain of work first, and a core keeps to the chapter it works in (its derivation caches stay
+    warm).  The helper is sent the forms it lacks and sends back those it built (as codec data, so
+    that each tree is rebuilt identically)."""
+    start, cpu = time.monotonic(), time.process_time()
+    group = {i: pl.sections.get(i, pl.specs[i].memoir) for i in pl.order}
+    jobs, after = schedule.dag_jobs(pl.order, group, {i: pl.specs[i].deps for i in pl.order})
+    chapters = _chapters(pl)
+    rank = schedule.critical_rank(jobs, after, lambda j: len(jobs[j]))
     built: dict[str, Result] = {}
-    pending = schedule.in_background(_forms_of, pl, away)
-    fresh = _build_ids(pl, [i for i in pl.order if pl.specs[i].memoir == home], built)
-    forms, fresh_away = pending()
-    for rid, (derived, printed) in forms.items():
-        built[rid] = Result(spec=pl.specs[rid], derived=derived, printed=printed, deps={})
-    log(f"built {len(built)} results ({len(fresh) + len(fresh_away)} derived anew) "
-        f"in {time.monotonic() - start:.0f} s")
+    fresh: list[str] = []
+    helper_has: set[str] = set()
+    helper_cpu = [0.0]
+
+    def pick(ready: list, last: str | None) -> str:
+        return max(ready, key=lambda j: (last is not None and chapters[j] == chapters[last], rank[j]))
+
+    def here(job: str, poll: Callable[[], None]) -> None:
+        fresh.extend(_build_ids(pl, list(jobs[job]), built, between=poll))
+
+    def send(job: str):
+        needed = sorted({d for i in jobs[job] for d in pl.specs[i].deps} - set(jobs[job]) - helper_has,
+                        key=pl.order.index)
+        helper_has.update(needed)
+        return codec.encode({d: (built[d].derived, built[d].printed) for d in needed})
+
+    def receive(job: str, value) -> None:
+        forms, fresh_there, seconds = value
+        for rid, (derived, printed) in codec.decode(forms).items():
+            built[rid] = Result(spec=pl.specs[rid], derived=derived, printed=printed,
+                                deps={d: built[d] for d in pl.specs[rid].deps})
+        fresh.extend(fresh_there)
+        helper_cpu[0] += seconds
+        helper_has.update(jobs[job])
+
+    where = schedule.over_dag(list(jobs), after, here, functools.partial(_build_there, pl, jobs, {}), send,
+                              receive, pick)
+    n_there = sum(len(jobs[j]) for j, w in where.items() if w == "there")
+    log(f"built {len(built)} results ({len(fresh)} derived anew) in {time.monotonic() - start:.0f} s: "
+        f"{len(built) - n_there} here ({time.process_time() - cpu:.0f} s CPU), "
+        f"{n_there} in the helper ({helper_cpu[0]:.0f} s CPU)")
     return _rewire(pl, built)
+
+
+def _chapters(pl: Plan) -> dict[str, str]:
+    """{first id of a section: its chapter} for every section (the names of the build's jobs)."""
+    memo: dict[str, str] = {}
+    out: dict[str, str] = {}
+    for i in pl.order:
+        sec = pl.sections.get(i, pl.specs[i].memoir)
+        if sec not in memo:
+            memo[sec] = _chapter(pl, i) if i in pl.sections else sec
+        out[sec] = memo[sec]
+    return out
+
+
+def _build_there(pl: Plan, jobs: Mapping[str, tuple], built: dict, job: str, payload) -> tuple:
+    """In the build helper: a job's Results, given the forms of its dependencies that the helper lacks
+    (``built`` is the helper's own, kept from job to job); (their forms as codec data, the ids built
+    anew, the CPU seconds it took)."""
+    cpu = time.process_time()
+    for rid, (derived, printed) in codec.decode(payload).items():
+        built[rid] = Result(spec=pl.specs[rid], derived=derived, printed=printed,
+                            deps={d: built[d] for d in pl.specs[rid].deps if d in built})
+    fresh = _build_ids(pl, list(jobs[job]), built)
+    forms = codec.encode({i: (built[i].derived, built[i].printed) for i in jobs[job]})
+    return forms, fresh, time.process_time() - cpu
 
 
 def _rewire(pl: Plan, built: dict[str, Result]) -> dict[str, Result]:
@@ -352,22 +413,29 @@ def _figure_job(job) -> figure.Plot:
     return cache.memo(key, functools.partial(figure.sample, fig, results, drawn))
 
 
+def _figure_job_of(pl: Plan, fig, built: Mapping[str, Result], emitted: Mapping[str, kn.Kernel]):
+    """(figure, its Results, the kernels it draws, its cache key), or None when a Result it cites is not built."""
+    if not all(i in built for i in fig.cites):
+        return None
+    ks = [emitted[c.result] for c in fig.curves if c.source == "kernel" and c.result in emitted]
+    key = figure.figure_key(fig, pl.keys, {k.result_id: sp.srepr(k.expr) for k in ks}, ("pendsym", *registry.packages()))
+    return fig, {i: built[i] for i in fig.cites}, ks, key
+
+
 def sample_figures(pl: Plan, built: Mapping[str, Result], formed: dict[str, list], log: Log) -> dict[str, list]:
     """Each memoir's figures, sampled (cached under :func:`pendsym.figure.figure_key`; the kernels drawn
     are those emitted, within the bound): {memoir: [(Figure, Plot)]}."""
     start = time.monotonic()
     jobs, fresh = {}, []
-    roots = ("pendsym", *registry.packages())
     for memoir in pl.memoirs:
         emitted = {k.result_id: k for k in formed.get(memoir, []) if within_bound(k)}
         for fig in registry.memoir(memoir).figures:
-            if not all(i in built for i in fig.cites):
+            job = _figure_job_of(pl, fig, built, emitted)
+            if job is None:
                 continue
-            ks = [emitted[c.result] for c in fig.curves if c.source == "kernel" and c.result in emitted]
-            key = figure.figure_key(fig, pl.keys, {k.result_id: sp.srepr(k.expr) for k in ks}, roots)
-            if cache.load(key) is cache.MISSING:
+            if cache.load(job[3]) is cache.MISSING:
                 fresh.append(fig.id)
-            jobs[fig.id] = (fig, {i: built[i] for i in fig.cites}, ks, key)
+            jobs[fig.id] = job
     plots = dict(zip(jobs, schedule.per_result(jobs, list(jobs), _figure_job)))
     if jobs:
         log(f"sampled {len(jobs)} figures ({len(fresh)} anew) in {time.monotonic() - start:.0f} s"
@@ -376,6 +444,57 @@ def sample_figures(pl: Plan, built: Mapping[str, Result], formed: dict[str, list
     for fig, *_ in jobs.values():
         out[fig.memoir].append((fig, plots[fig.id]))
     return out
+
+
+def figure_plots(memoir: str, level: str = "full") -> dict[str, tuple]:
+    """{figure id: (Figure, Plot)} of a memoir's figures as ``make derive`` samples them: from the cache under
+    the derive's key (the Results cited built as :func:`results` builds them, the kernels drawn those the derive
+    emits: :func:`emitted_kernel`), sampled here otherwise (and stored only under the string-hash seed 0)."""
+    pl = plan_of(level)
+    figs = registry.memoir(memoir).figures
+    built = results(ids=[i for f in figs for i in f.cites], level=level)
+    emitted = {}
+    for f in figs:
+        for c in f.curves:
+            if c.source == "kernel" and c.result in built and c.result not in emitted:
+                k = emitted_kernel(built[c.result], level)
+                if k is not None:
+                    emitted[c.result] = k
+    keep = os.environ.get("PYTHONHASHSEED") == "0"
+    out = {}
+    for f in figs:
+        job = _figure_job_of(pl, f, built, emitted)
+        fig, results_, ks, key = job
+        drawn = {k.result_id: (emitted_py(k.name, k.args, k.expr, k.domain), [a.name for a in k.args]) for k in ks}
+        out[f.id] = (f, cache.memo_fresh(key, functools.partial(figure.sample, fig, results_, drawn), keep)[0])
+    return out
+
+
+def c_accuracy(result: Result, level: str = "full") -> kn.Accuracy | None:
+    """The accuracy of a Result's kernel in C as ``make derive`` measured it on the emitted code (from the cache
+    under the derive's key), or None when no derive measured it."""
+    acc = cache.load(_c_key(result, plan_of(level)))
+    return None if acc is cache.MISSING else acc
+
+
+def formed_kernel(result: Result, level: str = "full") -> kn.Kernel | None:
+    """The kernel ``make derive`` formed for a Result, with the accuracy it measured in Python (from the cache
+    under the derive's key; never formed here), or None when no derive formed one."""
+    k = cache.load(kernel_key(result, plan_of(level).emitter))
+    return k if isinstance(k, kn.Kernel) else None
+
+
+def emitted_kernel(result: Result, level: str = "full") -> kn.Kernel | None:
+    """The kernel ``make derive`` emits for a Result (with the accuracies it measured), or None: no kernel asked
+    for, not a closed form, or over the bound."""
+    spec = result.spec
+    if spec.kernel is None or not registry.memoir(spec.memoir).kernels or not kn.closed_form(result.derived):
+        return None
+    k = kernel(result, level)
+    if k is None:
+        return None
+    k = dataclasses.replace(k, c_accuracy=c_accuracy(result, level))
+    return k if within_bound(k) else None
 
 
 # ----------------------------------------------------------------- emit and write

@@ -1,6 +1,7 @@
 """Haag 1935's figures (chapters II, VII, VIII, IX): the data each one draws, checked against what is found
 independently of the figure (roots by findroot, the chapter's other Results), so that a figure that draws
 the wrong thing fails here.  Chapter II's own data: test_haag1935_ch2_figures.py."""
+import dataclasses
 import math
 
 import mpmath as mp
@@ -17,9 +18,25 @@ pytestmark = pytest.mark.slow
 
 @pytest.fixture(scope="module")
 def plots():
+    """The figures as make derive sampled them (read from the cache under the derive's keys; sampled here when no
+    derive did), and the Results they cite."""
     cites = [i for f in MEMOIR.figures for i in f.cites]
     built = stages.results(ids=cites)
-    return {f.id: (f, figure.sample(f, built)) for f in MEMOIR.figures}, built
+    return stages.figure_plots(MEMOIR.key), built
+
+
+def test_the_figures_read_from_the_derive_are_what_sampling_gives(plots):
+    """The cheapest figure (its form curves only, at a few points) sampled here equals the derive's plot at those
+    points: a plot read from the cache is the sampling of these very Results."""
+    fig, plot = plots[0]["haag1935.fig.sensitivity"]
+    built = plots[1]
+    forms = [c for c in fig.curves if c.source in ("derived", "printed")]
+    assert forms
+    cheap = dataclasses.replace(fig, curves=tuple(dataclasses.replace(c, points=c.points[::7]) for c in forms))
+    again = figure.sample(cheap, built)
+    whole = dict(zip((c.label for c in fig.curves), plot.series))
+    for curve, points in zip(cheap.curves, again.series):
+        assert points and set(points) <= set(whole[curve.label]), curve.label
 
 
 def series(plots, fig_id, label):

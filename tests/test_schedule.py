@@ -42,3 +42,79 @@ def test_background_value_and_failure(monkeypatch):
     import pytest
     with pytest.raises(RuntimeError, match="ZeroDivisionError"):
         schedule.in_background(lambda: 1 / 0)()
+
+
+def test_dag_jobs_group_items_and_merge_groups_that_wait_for_each_other():
+    # a1 → b1 → a2: groups a and b depend on each other, so they are one job; c waits for it
+    order = ["a1", "b1", "a2", "c1", "d1"]
+    group = {"a1": "a", "b1": "b", "a2": "a", "c1": "c", "d1": "d"}
+    deps = {"a1": (), "b1": ("a1",), "a2": ("b1",), "c1": ("a2",), "d1": ()}
+    jobs, after = schedule.dag_jobs(order, group, deps)
+    assert jobs == {"a": ("a1", "b1", "a2"), "c": ("c1",), "d": ("d1",)}
+    assert after == {"a": frozenset(), "c": frozenset({"a"}), "d": frozenset()}
+
+
+def test_dag_jobs_order_puts_each_job_after_those_it_waits_for():
+    order = ["x1", "y1", "z1", "y2"]
+    group = {"x1": "x", "y1": "y", "z1": "z", "y2": "y"}
+    deps = {"x1": (), "y1": (), "z1": ("x1",), "y2": ("z1",)}
+    jobs, after = schedule.dag_jobs(order, group, deps)
+    names = list(jobs)
+    assert names == ["x", "z", "y"] and after["y"] == {"z"} and after["z"] == {"x"}
+
+
+def test_critical_rank_is_the_heaviest_chain_from_a_job():
+    jobs = {"a": (), "b": (), "c": (), "d": ()}
+    after = {"a": frozenset(), "b": frozenset({"a"}), "c": frozenset({"a"}), "d": frozenset({"c"})}
+    weight = {"a": 1.0, "b": 10.0, "c": 2.0, "d": 3.0}
+    rank = schedule.critical_rank(jobs, after, weight.__getitem__)
+    assert rank == {"a": 11.0, "b": 10.0, "c": 5.0, "d": 3.0}
+
+
+def _dag_run(monkeypatch, workers: str, fail_there: str | None = None):
+    """A DAG a → (b, c) → d whose jobs add up what they are sent: every job sees its dependencies' values,
+    wherever they ran."""
+    monkeypatch.setenv("PENDSYM_WORKERS", workers)
+    jobs = ["a", "b", "c", "d"]
+    after = {"a": frozenset(), "b": frozenset({"a"}), "c": frozenset({"a"}), "d": frozenset({"b", "c"})}
+    value = {"a": 1, "b": 10, "c": 100, "d": 1000}
+    here_values: dict = {}
+    log: list = []
+
+    def total(job, known):
+        return value[job] + sum(known[d] for d in after[job])
+
+    def here(job, poll):
+        here_values[job] = total(job, here_values)
+        poll()
+
+    def there(job, payload):
+        if job == fail_there:
+            raise ValueError("no")
+        return total(job, payload)
+
+    def send(job):
+        return {d: here_values[d] for d in after[job]}
+
+    def receive(job, v):
+        here_values[job] = v
+
+    def pick(ready, last):
+        log.append((tuple(ready), last))
+        return ready[0]
+    where = schedule.over_dag(jobs, after, here, there, send, receive, pick)
+    return here_values, where
+
+
+def test_over_dag_gives_the_serial_values_on_two_cores(monkeypatch):
+    serial, where1 = _dag_run(monkeypatch, "1")
+    parallel, where2 = _dag_run(monkeypatch, "2")
+    assert serial == parallel == {"a": 1, "b": 11, "c": 101, "d": 1112}
+    assert set(where1.values()) == {"here"}
+    assert "there" in where2.values() and set(where2) == {"a", "b", "c", "d"}
+
+
+def test_over_dag_reports_the_helpers_failure(monkeypatch):
+    import pytest
+    with pytest.raises(RuntimeError, match="ValueError: no"):
+        _dag_run(monkeypatch, "2", fail_there="a")
