@@ -59,6 +59,11 @@ def _call(rid: str):
     return _INHERITED["fn"](_INHERITED["results"][rid])
 
 
+def _call_indexed(job: tuple[int, str]) -> tuple[int, object]:
+    k, rid = job
+    return k, _call(rid)
+
+
 def workers() -> int:
     env = os.environ.get("PENDSYM_WORKERS")
     return max(1, int(env)) if env else max(1, min(2, os.cpu_count() or 1))
@@ -85,9 +90,14 @@ def per_result(results: Mapping[str, object], ids: Sequence[str], fn: Callable,
     try:
         with _sigint_held():
             pool = ctx.Pool(workers(), initializer=_adopt, initargs=(os.getpid(), results, fn))
-        pending = [pool.apply_async(_call, (i,), callback=(lambda _v, i=i: progress(i)) if progress else None)
-                   for i in ids]
-        out = [p.get() for p in pending]
+        # progress runs here, in the main thread, not as a pool callback: a callback that raises (a progress
+        # line written to a closed pipe) kills the pool's result thread, and the derive would wait forever
+        done: dict[int, object] = {}
+        for k, value in pool.imap_unordered(_call_indexed, enumerate(ids)):
+            done[k] = value
+            if progress:
+                progress(ids[k])
+        out = [done[k] for k in range(len(ids))]
     except BaseException:
         if pool is not None:
             pool.terminate()    # Ctrl-C or a failed job: no worker outlives this call

@@ -82,3 +82,27 @@ def test_ctrl_c_is_one_line_and_exit_130(tmp_path, root):
     assert err.strip().splitlines()[-1] == "pendsym: interrupted" and "Traceback" not in err
     assert wait_gone(workers) == []
     assert not (tmp_path / "out" / "results.json").exists()      # nothing half-written
+
+
+@pytest.mark.slow
+def test_a_derive_whose_reader_went_away_ends(tmp_path, root):
+    """`pendsym derive | head`, or a closed terminal: the output pipes close while the checks run.  The derive
+    ends (before, a progress line written from the pool's result thread killed that thread, and the derive
+    waited for its results forever)."""
+    env = dict(os.environ, PENDSYM_MEMOIR_PACKAGES="toy_memoirs", PYTHONPATH=str(root / "tests"),
+               PENDSYM_CACHE=str(tmp_path / "cache"), PENDSYM_WORKERS="2", TOY_SLOW_SECONDS="3")
+    proc = subprocess.Popen([sys.executable, "-m", "pendsym.cli", "derive", "--out", str(tmp_path / "out")],
+                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+    deadline = time.monotonic() + 60
+    while len(children(proc.pid)) < 2:               # the check workers are running
+        assert time.monotonic() < deadline and proc.poll() is None, "no workers started"
+        time.sleep(0.1)
+    workers = children(proc.pid)
+    proc.stdout.close()
+    proc.stderr.close()
+    try:
+        proc.wait(timeout=30)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        raise
+    assert wait_gone(workers) == []

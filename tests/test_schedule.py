@@ -16,6 +16,37 @@ def test_per_result_matches_serial(monkeypatch):
     assert par == ser == [data[i] ** 2 for i in ids]
 
 
+def test_a_progress_that_raises_ends_the_call_with_its_error(monkeypatch):
+    """progress runs in the caller's thread: when it raises (a progress line written to a closed pipe), the
+    error reaches the caller.  As a pool callback it killed the pool's result thread and the call waited
+    forever (a derive piped into a reader that went away hung)."""
+    import threading
+
+    def broken(_rid):
+        raise BrokenPipeError("the reader went away")
+    monkeypatch.setenv("PENDSYM_WORKERS", "2")
+    data = {f"r{i}": i for i in range(5)}
+    outcome = []
+
+    def run():
+        try:
+            schedule.per_result(data, list(data), _square, progress=broken)
+        except BrokenPipeError as exc:
+            outcome.append(exc)
+    worker = threading.Thread(target=run, daemon=True)
+    worker.start()
+    worker.join(timeout=30)
+    assert not worker.is_alive() and len(outcome) == 1
+
+
+def test_progress_names_every_id_once(monkeypatch):
+    monkeypatch.setenv("PENDSYM_WORKERS", "2")
+    data = {f"r{i}": i for i in range(9)}
+    seen = []
+    assert schedule.per_result(data, list(data), _square, progress=seen.append) == [i * i for i in range(9)]
+    assert sorted(seen) == sorted(data)
+
+
 def test_workers_env(monkeypatch):
     monkeypatch.setenv("PENDSYM_WORKERS", "3")
     assert schedule.workers() == 3
