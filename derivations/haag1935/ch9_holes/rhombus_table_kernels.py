@@ -1,8 +1,10 @@
-"""Haag 1935, chapter IX, n°109: v_0/λ, w_0/λ, w_λ/λ of the rhombus blade in u = ωλ, q = kλ, with their kernels.
+"""Haag 1935, chapter IX, n°109–110: v_0/λ, w_0/λ, w_λ/λ (343) and G_2/λ (346) of the rhombus blade in u = ωλ, q = kλ,
+with their kernels.
 
 Each Result is the derived (343) with x_0, x_1 of (334), ω = u/λ, k = q/λ, divided by λ (:func:`.kernel_forms.scaled_from`:
 an error if λ remains); checked against the inverted blade shot at (M0, k, λ), no Bessel function
-(:mod:`.rhombus_truth`), at u = λ/√M0, q = kλ.  The kernels' supplied forms: :mod:`.kernels`.
+(:mod:`.rhombus_truth`), at u = λ/√M0, q = kλ.  The kernels' supplied forms: :mod:`.kernels` for (343),
+:mod:`.rhombus_g2_kernel` for (346).
 """
 from __future__ import annotations
 
@@ -13,7 +15,7 @@ from pendsym.result import Spec
 
 from ..common import TOL, rid, src
 from ..symbols import u
-from . import kernel_forms, kernels, rhombus_truth as truth
+from . import kernel_forms, kernels, rhombus_g2_kernel, rhombus_truth as truth
 
 NAMES = {"v0": ("v_0", "v0"), "w0": ("w_0", "w0"), "wl": (r"w_\lambda", "wl")}
 TITLES = {"v0": "v_0", "w0": "w_0", "wl": "w_λ"}        # (plain text: a title is not TeX)
@@ -40,6 +42,16 @@ def on_shot_blade(name: str) -> checks.Values:
 
 
 def specs() -> tuple[Spec, ...]:
+    return ends() + (
+        Spec(rid(346, "G2_u_q"), "G_2/λ of the rhombus blade in u = ωλ, q = kλ", src("n°110 (346) in u = ωλ, q = kλ", None),
+             r"G_2/\lambda", lambda deps: kernel_forms.scaled_from(deps[rid(346, "G2")].derived, "G2"),
+             deps=(rid(346, "G2"),), check=on_shot_blade("G2"), kernel=rhombus_g2_kernel.kernel(),
+             note="(346) over λ with x_0 = 2u/q, x_1 = (u/q)√(2q + 4) ((334), λ = 1): G_2 is λ times a function of u "
+                  "and q. Its kernel evaluates the same G_2 as a sum of positive terms derived from (346) "
+                  "(rhombus_g2_kernel), where (346) subtracts terms of order 1/k."),)
+
+
+def ends() -> tuple[Spec, ...]:
     return tuple(
         Spec(rid(343, f"{name}_u_q"), f"{TITLES[name]}/λ of the rhombus blade in u = ωλ, q = kλ",
              src("n°109 (343) in u = ωλ, q = kλ", None), NAMES[name][0] + r"/\lambda",
