@@ -2,7 +2,8 @@
 
 The printed (346), the derived (346) and the truth (G_2 = ∫ w²/|M| ds on the shot blade, :mod:`.rhombus_truth`, no
 Bessel function) at ω, λ fixed, k from 10⁻⁸ to 10³, on log axes; and the emitted kernel of G_2/λ in u = ωλ, q = kλ
-(Result eq346.G2_u_q, :mod:`.rhombus_g2_kernel`) over its declared q ≤ 2.5.  λ = 1, so that G_2/λ is G_2.
+(Result eq346.G2_u_q, :mod:`.rhombus_g2_kernel`), drawn once it is emitted (not yet: the engine's note under the
+figure says so, the caption why).  λ = 1, so that G_2/λ is G_2.
 """
 from __future__ import annotations
 
@@ -54,10 +55,10 @@ G2_RHOMBUS = Figure(
              "truth; in double precision it loses about log10(1/k) digits as k → 0: the arguments x₀ ~ 2ω/k of the Bessel "
              "functions are rounded (a phase error of x₀·2⁻⁵³) and the terms of (346) cancel (those of order 1/k). "
              "With the arguments as double-doubles, v₀, w₀, w_λ hold to a few ulp down to k = 1e-8, but (346) still "
-             "cancels. The stable kernel (the emitted Python of G₂/λ in u = ωλ, q = kλ) evaluates the same G₂, "
-             "derived from (346) as a sum of positive terms: quadratures of squared cross products of Bessel "
-             "functions over the gap x₁ − x₀, with no subtraction; it is declared for q = kλ up to 2.5, where its "
-             "curve stops. "
+             "cancels. A stable form of G₂/λ in u = ωλ, q = kλ is derived (a sum of positive terms: quadratures of "
+             "squared cross products of Bessel functions over the gap x₁ − x₀) but not yet emitted as a kernel: it "
+             "holds 4 ulp × max(1, κ) on the derive's sample, not on the audit's search (up to 6.9), so the "
+             "stable-kernel curve is empty until it does (issue #14). "
              "The blade stays stable (β₁ < 0, (304)) for every k: "
              "at ω, λ fixed the hole only stiffens it away from its middle, so there is no largest stable k; the "
              "axis stops at k = 1000 (M at the ends 501 M₀)."),
