@@ -212,8 +212,10 @@ def supplied() -> sp.Expr:
     ``bessel_cross``, x_0 = 2u/q as a double-double, the gap u/(1 + √(1 + q/2)) as a double-double (t_i times each
     part).  Measured (session 11) against the derived (346): within 4 ulp × max(1, κ) on the derive's sample (2.77)
     but not on make audit's search: 6.86 at u = 1.5714, q = 1.83e-6 (κ ≈ 1) for the arrangement
-    c·(I_01N_10² + I_11N_00²)/(N_00²N_10²), 3.86 there for this one; the inherent part is N_00 (≈ 1 ulp, 2 in its
-    square) and the sums' roundings: a double-double sum and assembly (a helper) would close it."""
+    c·(I_01N_10² + I_11N_00²)/(N_00²N_10²), 3.86 there for this one, but 3.77 (Python; C 3.38) on the derive's sample
+    where the first held 2.77: neither is safely within 4.  The inherent part is N_00 (≈ 1 ulp, 2 in its square); the
+    rest, ~4 ulp, is the roundings of the sums and the assembly (with them exact, 2.67 at the audit's point): a
+    double-double sum and assembly (a helper) would close it."""
     X0 = 2 * u / q
     low = QuotientLow(2 * u, q, X0)
     gap, gap_low = RootQuotient(u, q / 2, 0), RootQuotient(u, q / 2, 1)
