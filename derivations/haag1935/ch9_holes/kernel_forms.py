@@ -29,7 +29,7 @@ up to 3e8): close to the contract, not within it.  G_2 does not: (346) itself su
 order 1/k (corrected: 4e7–7e9 scaled ulp at q = 1e-8, 5–180 at q = 0.01, up to 8.7 at q = 1, within 3 from
 q ≈ 10).  No series is needed: :mod:`.rhombus_g2_kernel` derives from (346) the same G_2 as a sum of positive
 terms (quadratures of squared cross products over the gap x_1 − x_0), the form of its future kernel (session
-11: 3.9 scaled ulp at the audit's worst point, not yet within the contract).
+11: make audit 6.55 scaled ulp at worst, not yet within the contract).
 """
 from __future__ import annotations
 

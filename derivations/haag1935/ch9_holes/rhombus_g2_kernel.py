@@ -23,8 +23,8 @@ same G_2 is derived, by code, as a sum of positive terms:
 
 **Not yet a kernel.**  :func:`kernel` is the KernelSpec to attach to eq346.G2_u_q once ``make audit`` passes: on the
 derive's sample the form holds 2.8 ulp × max(1, κ), but the audit's search (20,000 points) found 6.86 at u = 1.5714,
-q = 1.83e-6 (κ ≈ 1) for the first arrangement, and this one measures 3.86 there (:func:`supplied`), too close to 4 to
-declare untested.
+q = 1.83e-6 (κ ≈ 1) for the first arrangement; this one (:func:`supplied`) measures 3.86 there, but its own audit found
+6.32 (Python), 6.55 (C) at u = 1.81433, q = 0.128159 (135 and 141 of 20,000 points over 4).
 
 :func:`integral_residual` checks step 1–3 against the derived (346) by mpmath (the integrals by ``mpmath.quad`` at 50
 digits) and :func:`quadrature_residual` step 4; both are run by tests/test_haag1935_ch9_g2_kernel.py, not when the
@@ -213,7 +213,7 @@ def supplied() -> sp.Expr:
     part).  Measured (session 11) against the derived (346): within 4 ulp × max(1, κ) on the derive's sample (2.77)
     but not on make audit's search: 6.86 at u = 1.5714, q = 1.83e-6 (κ ≈ 1) for the arrangement
     c·(I_01N_10² + I_11N_00²)/(N_00²N_10²), 3.86 there for this one, but 3.77 (Python; C 3.38) on the derive's sample
-    where the first held 2.77: neither is safely within 4.  The inherent part is N_00 (≈ 1 ulp, 2 in its square); the
+    where the first held 2.77, and make audit 6.32 (Python), 6.55 (C) at u = 1.81433, q = 0.128159: neither is within 4.  The inherent part is N_00 (≈ 1 ulp, 2 in its square); the
     rest, ~4 ulp, is the roundings of the sums and the assembly (with them exact, 2.67 at the audit's point): a
     double-double sum and assembly (a helper) would close it."""
     X0 = 2 * u / q
