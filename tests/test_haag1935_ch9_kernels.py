@@ -147,7 +147,8 @@ def test_corrected_arguments_hold_the_end_values_where_the_plain_form_loses_digi
 @pytest.mark.slow
 def test_G2_still_cancels_with_corrected_arguments():
     """(346) subtracts terms of order 1/k: with the arguments corrected its error at q = 1e-8 is still over 1e6 ulp,
-    so G_2 needs the series in q below a switch (this test fails, as it should, once the form stops cancelling)."""
+    so a kernel of G_2 needs another form (tests/test_haag1935_ch9_g2_kernel.py; this test fails, as it should, if
+    the derived (346) stops cancelling)."""
     ((_, _, _, fixed),) = kf.relative_errors("G2", LIBM, [(1.7, 1e-8)])
     assert fixed > 1e6
 

@@ -1,8 +1,9 @@
 """Haag 1935, chapter IX, n°110: the figure of G_2 against k for the rhombus hole, (346).
 
 The printed (346), the derived (346) and the truth (G_2 = ∫ w²/|M| ds on the shot blade, :mod:`.rhombus_truth`, no
-Bessel function) at ω, λ fixed, k from 10⁻⁸ to 10³, on log axes; a curve for the emitted kernel of (346), which is
-drawn once one is emitted (none is today: the engine's note under the figure says so, and the caption why).
+Bessel function) at ω, λ fixed, k from 10⁻⁸ to 10³, on log axes; and the emitted kernel of G_2/λ in u = ωλ, q = kλ
+(Result eq346.G2_u_q, :mod:`.rhombus_g2_kernel`), drawn once it is emitted (not yet: the engine's note under the
+figure says so, the caption why).  λ = 1, so that G_2/λ is G_2.
 """
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ from pendsym.figure import Axis, Curve, Figure
 from ..common import rid
 from . import rhombus_truth as truth
 
-M0, LAMBDA = "1/2", "6/5"     # ω = √2, ωλ = 1.70 < π: the first case of the chapter's checks
+M0, LAMBDA = "1/2", "1"       # ω = √2, ωλ = 1.41 < π; λ = 1 so that the kernel of G_2/λ draws G_2
 FORM_POINTS = tuple(mp.nstr(mp.mpf(10) ** (-8 + 11 * mp.mpf(i) / 32), 6) for i in range(33))     # k = 1e-8 … 1e3
 TRUTH_POINTS = ("1e-8", "1e-6", "1e-4", "0.001", "0.01", "0.1", "1", "10", "100", "1000")
 
@@ -23,11 +24,12 @@ def rational(x) -> str:
 
 
 def env(k) -> dict:
-    """ω, k, λ and x_0, x_1 of (334) at k (the memoir's symbols, as the forms take them)."""
+    """ω, k, λ and x_0, x_1 of (334) at k (the memoir's symbols, as the forms take them), and the kernel's u = ωλ, q = kλ."""
     out = truth.environment(M0, "1", LAMBDA)
     out["k"] = k
     out["x_0"] = 2 * out["omega"] / k
     out["x_1"] = out["x_0"] * mp.sqrt(1 + k * out["lambda"] / 2)
+    out["u"], out["q"] = out["omega"] * out["lambda"], k * out["lambda"]
     return out
 
 
@@ -45,22 +47,25 @@ def beta1(k, dps) -> mp.mpf:
 
 G2_RHOMBUS = Figure(
     id="haag1935.fig.rhombus_G2", module=__name__,
-    title="G₂ of the rhombus hole against k: printed, derived, truth",
-    caption=("The inverted blade with a rhombus hole, M = M₀(1 + k|s|) (n°107–110), ω = 1/√M₀ = √2, λ = 1.2: the "
+    title="G₂ of the rhombus hole against k: printed, derived, stable kernel, truth",
+    caption=("The inverted blade with a rhombus hole, M = M₀(1 + k|s|) (n°107–110), ω = 1/√M₀ = √2, λ = 1: the "
              "sensitivity integral G₂ of (346) against k. The printed (346) is wrong (a finding: its terms ω²/k and "
              "½(D₁/D + D'₁/D') are not lengths): it grows like (ω² − 1)/k as k → 0, where the derived form and the "
              "truth tend to the uniform blade's G₂. The derived form, evaluated at enough digits, agrees with the "
              "truth; in double precision it loses about log10(1/k) digits as k → 0: the arguments x₀ ~ 2ω/k of the Bessel "
              "functions are rounded (a phase error of x₀·2⁻⁵³) and the terms of (346) cancel (those of order 1/k). "
              "With the arguments as double-doubles, v₀, w₀, w_λ hold to a few ulp down to k = 1e-8, but (346) still "
-             "cancels: no kernel of it is emitted yet (issue #14). "
+             "cancels. A stable form of G₂/λ in u = ωλ, q = kλ is derived (a sum of positive terms: quadratures of "
+             "squared cross products of Bessel functions over the gap x₁ − x₀) but not yet emitted as a kernel: it "
+             "holds 4 ulp × max(1, κ) on the derive's sample, not on the audit's search (up to 6.9), so the "
+             "stable-kernel curve is empty until it does (issue #14). "
              "The blade stays stable (β₁ < 0, (304)) for every k: "
              "at ω, λ fixed the hole only stiffens it away from its middle, so there is no largest stable k; the "
-             "axis stops at k = 1000 (M at the ends 601 M₀)."),
+             "axis stops at k = 1000 (M at the ends 501 M₀)."),
     x=Axis("k", log=True, lo=1e-8, hi=1e3), y=Axis("G_2", log=True),
     curves=(Curve("(346) printed", "printed", FORM_POINTS, result=rid(346, "G2"), env=env, style="dashed"),
             Curve("(346) derived", "derived", FORM_POINTS, result=rid(346, "G2"), env=env),
-            Curve("stable kernel", "kernel", FORM_POINTS, result=rid(346, "G2"), env=env),
+            Curve("stable kernel", "kernel", FORM_POINTS, result=rid(346, "G2_u_q"), env=env),
             Curve("truth", "truth", TRUTH_POINTS, truth=G2, style="marks",
                   describe=f"G₂ of the {truth.BLADE}, M₀ = {M0}, λ = {LAMBDA}")),
     dps=15, form_dps=40)

@@ -27,9 +27,9 @@ within 6.4 × max(1, κ) ulp for u ≥ 0.3 (200 random points, q from 1e-8 to 20
 of the points over 4) and 48 at u = 0.05 (where D_1, D' cancel like 2/u) (libm's j0, j1, y0, y1; the plain form:
 up to 3e8): close to the contract, not within it.  G_2 does not: (346) itself subtracts terms of
 order 1/k (corrected: 4e7–7e9 scaled ulp at q = 1e-8, 5–180 at q = 0.01, up to 8.7 at q = 1, within 3 from
-q ≈ 10), so below a switch it needs the series in q (:mod:`.rhombus_series`, derived to first order only today;
-its SymPy derivation takes 5 s, 19 s, 51 s CPU for orders 2, 3, 4, too slow for the ~7 orders needed at
-q = 1e-2) and between the switch and q ≈ 10 another arrangement of (346).
+q ≈ 10).  No series is needed: :mod:`.rhombus_g2_kernel` derives from (346) the same G_2 as a sum of positive
+terms (quadratures of squared cross products over the gap x_1 − x_0), the form of its future kernel (session
+11: make audit 6.55 scaled ulp at worst, not yet within the contract).
 """
 from __future__ import annotations
 
