@@ -19,7 +19,7 @@ from pendsym.emit import files
 from pendsym.emit import kernels as kn
 from pendsym.emit.kernels import supplied
 
-from tests.test_haag1935_ch9_kernels import LIBM, needs_libm
+from test_haag1935_ch9_kernels import LIBM, needs_libm          # tests/ is on sys.path (pytest, rootdir-less)
 
 ARGS = (ch9_kernels.U_ARG, ch9_kernels.Q_ARG)
 
@@ -71,7 +71,7 @@ def test_quadrature_rule_error_is_far_below_an_ulp(uq):
 def _emitted(tmp_path):
     """{language: callable} of the supplied form printed as make derive prints a kernel."""
     form = g2k.supplied()
-    out = {"Python": supplied.emitted_py("eq346_G2_u_q", ARGS, form)}
+    out = {"Python": kn.emitted_py("eq346_G2_u_q", ARGS, form)}
     if LIBM is not None:
         k = kn.Kernel("eq346_G2_u_q", "haag1935.eq346.G2_u_q", ARGS, form, "supplied", "", "",
                       domain=tuple((a.lo, a.hi) for a in ARGS))

@@ -202,6 +202,7 @@ def test_rectangle_concentric_scaled_agrees_with_the_shot_blade():
 from derivations.haag1935.ch9_holes import kernels as ch9_kernels          # noqa: E402
 from pendsym.emit import files                                               # noqa: E402
 from pendsym.emit import kernels as kn                                       # noqa: E402
+from pendsym.emit import kernels as kernels_emit                             # noqa: E402
 from pendsym.emit.kernels import supplied                                    # noqa: E402
 
 KERNEL_ARGS = (ch9_kernels.U_ARG, ch9_kernels.Q_ARG)
@@ -299,7 +300,7 @@ def _emitted_kernels(tmp_path):
     for name in ("v0", "w0", "wl"):
         form = ch9_kernels.supplied(name)
         kname = f"eq343_{name}_u_q"
-        out[name] = {"Python": supplied.emitted_py(kname, KERNEL_ARGS, form)}
+        out[name] = {"Python": kernels_emit.emitted_py(kname, KERNEL_ARGS, form)}
         ks.append(kn.Kernel(kname, f"haag1935.eq343.{name}_u_q", KERNEL_ARGS, form, "supplied", "", "",
                             domain=tuple((a.lo, a.hi) for a in KERNEL_ARGS)))
     if LIBM is not None:

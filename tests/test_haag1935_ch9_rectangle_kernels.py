@@ -1,7 +1,7 @@
 """The supplied form for a kernel of G_2/λ of the blade with a concentric rectangular hole (n°105–106, (333); issue
 #14), in u = ωλ, u_p = ω'p, ρ = p/λ.  It is not declared (it fails the audit: 4.4 scaled ulp,
 :data:`.rectangle_kernels.AUDIT`), so it is measured here as the engine would print it in Python
-(:func:`pendsym.emit.kernels.supplied.emitted_py`), not from generated/.
+(:func:`pendsym.emit.kernels.emitted_py`), not from generated/.
 
 The reference is written here from the memoir's definitions, not from the kernel's form nor from (333): the
 inverted blade (9), |M| w'' + w = 0 with |M| = 1/ω² off the hole and 1/ω'² on it (n°104), w a cos + sin on each
@@ -84,7 +84,7 @@ def ulp_error(got, value) -> float:
 @pytest.fixture(scope="module")
 def emitted():
     """{"Python": the form as the engine prints a kernel of it} (no C: it is not emitted)."""
-    from pendsym.emit.kernels.supplied import emitted_py
+    from pendsym.emit.kernels import emitted_py
     return {"Python": emitted_py(NAME, (kernels.U_ARG, kernels.UP_ARG, kernels.RHO_ARG), kernels.short_form())}
 
 

@@ -253,6 +253,6 @@ def double_value(u_: float, q_: float) -> float:
 
 @functools.lru_cache(maxsize=None)
 def _emitted():
-    from pendsym.emit.kernels.supplied import emitted_py
+    from pendsym.emit.kernels import emitted_py
     return emitted_py("G2_u_q", (kernels.U_ARG, kernels.Q_ARG), supplied())
 

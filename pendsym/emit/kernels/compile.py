@@ -17,6 +17,7 @@ from ...result import KernelArg, Result
 from .measure import Accuracy, measure
 from .printing import definition, kernel_function
 from .sampling import kernel_sample
+from .supplied import helper_definitions
 
 CC = ("cc", "-std=c99", "-O2", "-fPIC", "-shared")
 
@@ -47,10 +48,11 @@ def c_accuracy(lib: ctypes.CDLL, k, result: Result) -> Accuracy:
 
 
 def emitted_py(name: str, args: Sequence[KernelArg], expr: sp.Expr, domain: tuple = ()) -> Callable[..., float]:
-    """The kernel's Python function exactly as emitted (templates/function.py.j2), compiled
-    here: the accuracy reported is that of the generated code, whose subexpressions and
-    branches may round differently from the single expression the forms were ranked with."""
+    """The kernel's Python function exactly as emitted (templates/function.py.j2), with the definitions of
+    the supplied helpers it calls (none for most forms), compiled here: the accuracy reported is that of
+    the generated code, whose subexpressions and branches may round differently from the single
+    expression the forms were ranked with."""
     namespace = {"math": math}
-    text = definition(kernel_function(name, args, expr, domain), "py")
+    text = "\n\n\n".join([*helper_definitions([expr], "py"), definition(kernel_function(name, args, expr, domain), "py")])
     exec(compile(text, f"<kernel {name}>", "exec"), namespace)   # our own generated code
     return namespace[name]

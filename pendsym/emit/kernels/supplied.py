@@ -30,7 +30,6 @@ import sympy as sp
 
 from ...result import KernelArg, KernelSpec, Result
 from .measure import BOUND, Accuracy, Naive, errors, measure, references
-from .printing import definition, kernel_function
 from .sampling import kernel_sample
 
 
@@ -140,15 +139,6 @@ def c_preamble(exprs: Sequence[sp.Basic]) -> str:
     return "#define _XOPEN_SOURCE 700" if set(helpers_called(exprs)) & NEEDS_XOPEN else ""
 
 
-def emitted_py(name: str, args: Sequence[KernelArg], expr: sp.Expr, domain: tuple = ()) -> Callable[..., float]:
-    """The kernel's Python function as emitted, with the helpers it calls, compiled here (as
-    :func:`.compile.emitted_py`, which holds math only)."""
-    text = "\n\n\n".join([*helper_definitions([expr], "py"), definition(kernel_function(name, args, expr, domain), "py")])
-    namespace = {"math": math}
-    exec(compile(text, f"<kernel {name}>", "exec"), namespace)      # our own generated code
-    return namespace[name]
-
-
 def _naive(result: Result, args: Sequence[KernelArg], points, truths) -> Naive:
     """The derived form in double, scipy's jv, yv at the rounded arguments: the form a user would type."""
     syms = [next(s for s in result.derived.free_symbols if s.name == a.name) for a in args]
@@ -184,6 +174,7 @@ def supplied_kernel(result: Result):
         raise ValueError(f"{result.id}: the supplied form uses {sorted(free - {a.name for a in args})}")
     pts = kernel_sample(result.derived, args, name)
     truths = references(result.derived, args, pts)
+    from .compile import emitted_py          # (compile imports this module's helper_definitions)
     py = measure(emitted_py(name, args, form), result.derived, args, pts, truths)
     return Kernel(name, result.id, args, form, spec.rule, spec.doc or result.spec.title, result.spec.source.ref(),
                   py_accuracy=py, notes=spec.notes, naive=_naive(result, args, pts, truths), reference=truths,
