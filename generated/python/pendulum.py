@@ -2,16 +2,17 @@
 
 Source: the exact swing time of θ'' + k² sin θ = 0 from rest at −α,
 T = 2K(sin²(α/2))/k = π / (k·AGM(1, cos(α/2))) (Gauss).
-Content hash: 520ef0d117c82d8b
+Content hash: ae85da0bf784cb12
 
 alpha and k may be floats or numpy arrays (broadcast together; the same five AGM steps,
-vectorised: no Python loop over the elements).
+vectorised over blocks of BLOCK elements: no Python loop over the elements).
 """
 import math
 
 import numpy
 
 __all__ = ["swing_time_agm"]
+BLOCK = 16384     # elements per block of the array path (measured: 4,096 is slower, 1,024 much slower)
 
 
 def swing_time_agm(alpha, k):
@@ -36,7 +37,25 @@ def _swing_time_agm_array(alpha, k):
     bad = ~((0.0 < k) & (k < math.inf))
     if bad.any():
         raise ValueError(f"swing_time_agm: k = {float(k[bad].flat[0])!r} is outside its domain (0, inf)")
-    a, b = numpy.ones_like(alpha), numpy.cos(0.5 * alpha)
-    for _ in range(5):     # five steps over the whole array
-        a, b = 0.5 * (a + b), numpy.sqrt(a * b)
-    return math.pi / (k * 0.5 * (a + b))
+    # the scalar path's operations in the same order, bit for bit: from a = 1 the first step is a = 0.5·(1 + c),
+    # b = √c (1·c is c exactly), x·0.5 is 0.5·x, and (a + b)·(k·0.5) is k·0.5·(a + b).  In blocks of BLOCK elements
+    # held in three reused buffers, so that the five steps run in cache (no Python loop over the elements)
+    flat = numpy.atleast_1d(alpha).reshape(-1)
+    total = numpy.empty(flat.size)
+    n = min(BLOCK, flat.size)
+    a_buf, b_buf, s_buf = numpy.empty(n), numpy.empty(n), numpy.empty(n)
+    for start in range(0, flat.size, BLOCK):
+        stop = min(start + BLOCK, flat.size)
+        a, b, s = a_buf[:stop - start], b_buf[:stop - start], s_buf[:stop - start]
+        numpy.multiply(flat[start:stop], 0.5, out=b)
+        numpy.cos(b, out=b)
+        numpy.add(1.0, b, out=a)
+        numpy.multiply(a, 0.5, out=a)
+        numpy.sqrt(b, out=b)
+        for _ in range(4):     # the other four steps
+            numpy.add(a, b, out=s)
+            numpy.multiply(a, b, out=b)
+            numpy.sqrt(b, out=b)
+            numpy.multiply(s, 0.5, out=a)
+        numpy.add(a, b, out=total[start:stop])
+    return math.pi / (total.reshape(numpy.shape(alpha)) * (k * 0.5))
