@@ -92,7 +92,7 @@ def test_n2_of_the_inverted_blade_is_the_mode_with_the_upper_node_and_vanishes_a
     """The scenes' n² (n°101 with n°50): the truth's mode with node z' < 0, which near a1 is the slow one; the
     derived form agrees with it, changes sign at a1 (n² ∝ a1 − a) and is not the fast mode's n²."""
     from pendsym import verify
-    from pendsym.scenes.budget import build
+    from pendsym.scenes.evaluate import build
     from derivations.haag1935.ch7_gravity import truth as gravity
     a, n2 = truth.node_mode_n2("u=1", "-0.01")
     with mp.workdps(40):

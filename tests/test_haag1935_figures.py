@@ -131,7 +131,7 @@ def test_the_derived_G2_meets_the_shot_blade_and_the_printed_one_does_not(plots)
     # as k → 0 the printed form grows like (ω² − 1)/k, ω² = 1/M0 = 2
     assert abs(printed[1e-8] * 1e-8 - 1) < 1e-3 and abs(derived[1e-8] / truth[0][1] - 1) < 1e-8
     # the uniform inverted blade at k → 0: G2 = ω²∫w² ds, w = −cos ωs/(ω sin ωλ) ((313): w0, wλ), by quadrature
-    omega, lam = mp.sqrt(2), mp.mpf("1.2")
+    omega, lam = mp.sqrt(2), mp.mpf(ch9.LAMBDA)                 # the figure's λ (1 since session 11)
     uniform = omega**2 * mp.quad(lambda s: (mp.cos(omega * s) / (omega * mp.sin(omega * lam))) ** 2, [0, lam])
     assert abs(truth[0][1] / uniform - 1) < 1e-6
 
