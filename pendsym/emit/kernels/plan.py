@@ -69,9 +69,10 @@ def always_evaluated(expr: sp.Basic, kind) -> set:
 
 
 def units(expr: sp.Basic) -> set:
-    """Every subexpression evaluated as one unit (a :class:`Grouped` leaf or a Piecewise),
-    wherever it is: the parts one kernel may share with another (:mod:`.sharing`)."""
-    return expr.atoms(Grouped, sp.Piecewise)
+    """Every subexpression evaluated as one unit (a :class:`Grouped` leaf, a Piecewise or a
+    :class:`Select`), wherever it is: the parts one kernel may share with another (:mod:`.sharing`;
+    the root of (30) that K (36) and n² (34) both need is a Select since session 11)."""
+    return expr.atoms(Grouped, sp.Piecewise, Select)
 
 
 def _const(sym: sp.Symbol, value: sp.Expr) -> Declaration:
