@@ -36,8 +36,10 @@ import sympy as sp
 from . import pipeline, stages
 from .audit import arrays as ar
 from .audit import points as pt
+from .audit.code import TIMING_PREAMBLE, c_loop, c_time
 from .audit.run import _arguments, _load_py
 from .emit import kernels as kn
+from .emit.kernels.compile import CC
 from .emit.kernels.measure import ref_dps
 from .io import write_atomic
 
@@ -48,29 +50,12 @@ ARRAY_BUDGET = 0.25       # seconds a numpy timing call may take
 MP_POINTS = 40            # random points of an mpmath timing run
 ERROR_POINTS = 100        # random points of the error columns
 REPEATS = 5
-CC = ("cc", "-std=c99", "-O2", "-fPIC", "-shared")
-POSIX = "#define _POSIX_C_SOURCE 199309L\n#include <time.h>\n"
 
 
-def _loop(fname: str, n: int) -> str:
-    """A C timing loop over an array of points for the function fname of n doubles."""
-    call = ", ".join(f"x[{n}*i+{j}]" for j in range(n))
-    return f"""double {fname}({', '.join(['double'] * n)});
-double time_{fname}(const double *x, long m, long reps)
-{{
-    volatile double sink = 0.0;
-    double acc = 0.0;
-    struct timespec a, b;
-    clock_gettime(CLOCK_MONOTONIC, &a);
-    for (long r = 0; r < reps; ++r)
-        for (long i = 0; i < m; ++i)
-            acc += {fname}({call});
-    clock_gettime(CLOCK_MONOTONIC, &b);
-    sink = acc;
-    (void)sink;
-    return ((b.tv_sec - a.tv_sec) * 1e9 + (b.tv_nsec - a.tv_nsec)) / ((double)reps * m);
-}}
-"""
+def _prototyped_loop(fname: str, n: int) -> str:
+    """The timing loop of fname with its prototype (the memoir's header is not included: the naive
+    forms are in no header)."""
+    return f"double {fname}({', '.join(['double'] * n)});\n" + c_loop(fname, n)
 
 
 def naive_c(name: str, args, expr: sp.Expr) -> str:
@@ -93,19 +78,6 @@ def compile_units(units: Sequence[str], work: Path) -> ctypes.CDLL:
     if done.returncode:
         raise RuntimeError(f"cc failed: {done.stderr.strip()[:2000]}")
     return ctypes.CDLL(str(lib))
-
-
-def c_time(lib: ctypes.CDLL, fname: str, pts: Sequence[tuple]) -> tuple[float, float]:
-    """(min, median) ns per call of a C function in its timing loop over REPEATS runs."""
-    n = len(pts[0])
-    flat = (ctypes.c_double * (len(pts) * n))(*[v for p in pts for v in p])
-    fn = getattr(lib, f"time_{fname}")
-    fn.restype = ctypes.c_double
-    fn.argtypes = [ctypes.c_void_p, ctypes.c_long, ctypes.c_long]
-    fn(flat, len(pts), 2)
-    reps = max(1, int(2e6 / max(1.0, fn(flat, len(pts), 1) * len(pts))))
-    runs = [fn(flat, len(pts), reps) for _ in range(REPEATS)]
-    return round(min(runs), 1), round(statistics.median(runs), 1)
 
 
 def call_time(fn: Callable, pts: Sequence[tuple], repeats: int = REPEATS) -> tuple[float, float]:
@@ -166,8 +138,8 @@ def bench_kernel(name: str, result, mod, lib, has_naive: bool, work_seed: str = 
     if has_naive:
         naive = getattr(lib, f"{name}_naive")
         naive.restype, naive.argtypes = ctypes.c_double, [ctypes.c_double] * len(args)
-        methods["naive printed form, C double"] = (c_time(lib, f"{name}_naive", pts), max_ulp(values(naive, err_pts), truths))
-    methods["stable C kernel"] = (c_time(lib, name, pts), max_ulp(values(c_fn, err_pts), truths))
+        methods["naive printed form, C double"] = (c_time(lib, f"{name}_naive", pts, REPEATS), max_ulp(values(naive, err_pts), truths))
+    methods["stable C kernel"] = (c_time(lib, name, pts, REPEATS), max_ulp(values(c_fn, err_pts), truths))
     methods["Python kernel"] = (call_time(py, pts[:PY_POINTS]), max_ulp(values(py, err_pts), truths))
     *array_ns, elements = ar.ns_per_element(py, [(a.name, a.lo, a.hi, a.log) for a in args], seed,
                                             n=ARRAY_POINTS, repeats=REPEATS, budget=ARRAY_BUDGET)
@@ -189,16 +161,16 @@ def run(generated: Path, memoirs: Sequence[str] = ()) -> dict[str, list[dict]]:
     for memoir, names in by_memoir.items():
         mod = _load_py(generated / "python" / f"{memoir}.py")
         units = [(generated / "c" / f"{memoir}.c").read_text().replace(f'#include "{memoir}.h"', "")]
-        loops, naive = [POSIX], {}
+        loops, naive = [TIMING_PREAMBLE], {}
         for name, rid in names:
             args, _ = _arguments(built[rid])
             form, expr = kn.naive_form(built[rid], args)
             text = naive_c(name, args, expr) if form == "printed" else ""
             if text:
                 units.append("#include <errno.h>\n#include <math.h>\n" + text)
-                loops.append(_loop(f"{name}_naive", len(args)))
+                loops.append(_prototyped_loop(f"{name}_naive", len(args)))
                 naive[name] = True
-            loops.append(_loop(name, len(args)))
+            loops.append(_prototyped_loop(name, len(args)))
         units.append("\n".join(loops))
         with tempfile.TemporaryDirectory() as tmp:
             lib = compile_units(units, Path(tmp))
