@@ -107,42 +107,6 @@ def per_result(results: Mapping[str, object], ids: Sequence[str], fn: Callable,
     return out
 
 
-def in_background(fn: Callable, *args):
-    """Run fn(*args) in one forked process while the caller works; returns a getter for the value
-    (or, without fork, computes it at once).  The arguments are inherited through the fork, not
-    pickled; only the value comes back."""
-    if not can_fork():
-        value = fn(*args)
-        return lambda: value
-    ctx = multiprocessing.get_context("fork")
-    receive, send = ctx.Pipe(duplex=False)
-    parent = os.getpid()
-
-    def child():
-        _die_with_parent(parent)
-        _ignore_sigint()
-        try:
-            send.send((True, fn(*args)))
-        except BaseException as exc:  # reported in the parent
-            send.send((False, f"{type(exc).__name__}: {exc}"))
-    proc = ctx.Process(target=child, daemon=True)
-    with _sigint_held():
-        proc.start()
-    send.close()
-
-    def get():
-        try:
-            ok, value = receive.recv()
-        except EOFError:
-            raise RuntimeError("the background build died") from None
-        finally:
-            proc.join()
-        if not ok:
-            raise RuntimeError(f"the background build failed: {value}")
-        return value
-    return get
-
-
 def jobs_by_affinity(ids: Sequence[str], groups: Sequence[Sequence[str]]) -> list[tuple[str, ...]]:
     """One job per id, except each affinity group whose members are all present, which is one job
     (its checks share computations in one worker); groups that overlap are one job.  Keeps the

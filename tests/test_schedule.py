@@ -67,14 +67,6 @@ def test_overlapping_groups_are_one_job_and_no_id_runs_twice():
     assert sorted(i for job in jobs for i in job) == ids
 
 
-def test_background_value_and_failure(monkeypatch):
-    monkeypatch.setenv("PENDSYM_WORKERS", "2")
-    assert schedule.in_background(_square, 7)() == 49
-    import pytest
-    with pytest.raises(RuntimeError, match="ZeroDivisionError"):
-        schedule.in_background(lambda: 1 / 0)()
-
-
 def test_dag_jobs_group_items_and_merge_groups_that_wait_for_each_other():
     # a1 → b1 → a2: groups a and b depend on each other, so they are one job; c waits for it
     order = ["a1", "b1", "a2", "c1", "d1"]
