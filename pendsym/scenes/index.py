@@ -13,7 +13,6 @@ import hashlib
 import importlib
 from dataclasses import dataclass
 from pathlib import Path
-from graphlib import TopologicalSorter
 from typing import Iterable, Mapping
 
 import sympy as sp
@@ -106,25 +105,9 @@ def entries(pkgs: tuple[str, ...] | None = None) -> Mapping[str, Entry]:
 
 
 def closure(ids: Iterable[str], index: Mapping[str, Entry]) -> list[str]:
-    """The ids and all they depend on, dependencies first (sorted within a level: deterministic)."""
-    need: dict[str, tuple[str, ...]] = {}
-    stack = list(ids)
-    while stack:
-        rid = stack.pop()
-        if rid in need:
-            continue
-        if rid not in index:
-            raise registry.UnknownResult(rid, index)
-        need[rid] = index[rid].deps
-        stack.extend(index[rid].deps)
-    sorter = TopologicalSorter(need)
-    sorter.prepare()
-    out: list[str] = []
-    while sorter.is_active():
-        ready = sorted(sorter.get_ready())
-        out.extend(ready)
-        sorter.done(*ready)
-    return out
+    """The ids and all they depend on, dependencies first, in the order a derive takes them: the registry's
+    :func:`pendsym.registry.closure` over the index's entries (each has its ``deps``; the index is in plan order)."""
+    return registry.closure(ids, index)
 
 
 def _specs(sections: Iterable[str]) -> dict[str, Spec]:
