@@ -151,6 +151,9 @@ def compare_forms(printed: sp.Expr, derived: sp.Expr, seed: str, instances=()) -
     if isinstance(printed, sp.Tuple) or isinstance(derived, sp.Tuple):
         same = len(printed) == len(derived) and all(sp.simplify(p - d) == 0 for p, d in zip(printed, derived))
         return ("match", "identical by exact simplification") if same else ("discrepancy", "components differ")
+    if printed == derived and printed.has(sp.Integral):
+        # the same tree: evaluating its integrals at 50 digits could only agree with itself
+        return "match", "identical expression trees (structural equality)"
     if instances:
         worst = 0.0
         for inst in instances:

@@ -124,3 +124,14 @@ def test_the_guard_counts_terms_not_seconds():
     printed, derived = _hyperbolic_pair()
     assert verify.expansion_terms(printed - derived) == verify.expansion_terms(printed - derived)
     assert verify.expansion_terms((x + 1) ** 3 - 1) == 3
+
+
+def test_identical_integral_trees_match_without_evaluation():
+    s = sp.Symbol("s", positive=True)
+    lam = sp.Symbol("lambda", positive=True)
+    inner = sp.Integral(sp.exp(-s**2) * sp.Integral(sp.sin(x * s), (x, 0, s)), (s, 0, lam))
+    status, how = verify.compare_forms(inner, inner.func(*inner.args), "tree")
+    assert (status, how) == ("match", "identical expression trees (structural equality)")
+    changed = sp.Integral(sp.exp(-s**2) * sp.Integral(sp.sin(x * s) * (1 + sp.Rational(1, 10**8)), (x, 0, s)),
+                          (s, 0, lam))
+    assert verify.compare_forms(inner, changed, "tree")[0] == "discrepancy"
