@@ -153,10 +153,10 @@ def test_unstable_or_inconsistent_holed_scenes_are_refused(root):
 
 def test_clamping_is_refused_with_the_reason(root):
     from pendsym.scenes.schema import Scene  # noqa: F401  (the schema names the keys)
-    for key, value, reason in (("clamping", {"i": 0.001}, "need the clamps' angles"),):
+    for key, value, reason in (("clamping", {"i": 0.001}, "the inverted blade's (318)"),):
         data = data_of(root)
         data[key] = value
         with pytest.raises(scenes.SceneError) as exc:
             scenes.from_data(data)
         line = str(exc.value)
-        assert "\n" not in line and line.startswith(f"scene: {key}: not supported yet") and reason in line, line
+        assert "\n" not in line and line.startswith(f"scene: {key} is given with an inverted blade") and reason in line, line

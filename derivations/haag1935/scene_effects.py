@@ -1,13 +1,15 @@
 """Haag 1935 in scenes: the uniform blade's effect on the period (chapter III, n°50: n² = Kgz/R²
 with K of (36) and z of (30)), against a knife edge at the blade's lower clamp; and, for a short
-blade (λ/a ≤ 0.1, chapter VI), its isochronism error (244) and its inertia (251) and weight (253).
+blade (λ/a ≤ 0.1, chapter VI), its isochronism error (244), its inertia (251) and weight (253), and its
+clamping errors (249).
 
 ΔT/T = k/n − 1 with k² = ga/(a² + R²) the rigid pendulum pivoting at the clamp.  The short blade's
 Results neglect λ² and R² before a² (n°78–81); their errors are estimated as that next order.  The
 isochronism error (244) contains the circular error θ0²/16 of the rigid pendulum, which Charbonnier's
 effect already counts: the blade's part is (244) − θ0²/16.  What the engine does not give for a blade
-is listed by :func:`pending`: the clamping errors (their angles are not in the scene), and the
-finite-amplitude terms and the blade's mass for a blade that is not short.
+is listed by :func:`pending`: the clamping errors when the scene gives no angles (with them, (249) and (247) for
+a short blade), and the finite-amplitude terms, the blade's mass and the clamping errors for a blade that is not
+short.
 
 The inverted blade (chapter VIII: a gravity meter) has no rigid-pendulum base: the base is the slow vibration's
 n² of the inverted uniform blade (eq034.n2_inverted: n°101's u → iu, g → −g on (34), (36), (30)), whose derivative
@@ -181,6 +183,47 @@ def _next_order(rel: float, inst: Instrument, *extra: float) -> float:
     return abs(rel) * (inst.blade_short + (inst.R / inst.a) ** 2 + sum(extra))
 
 
+CLAMP_SUM = "haag1935.eq247.sum"
+
+
+def _clamped(inst: Instrument) -> bool:
+    return _short(inst) and inst.clamping_i is not None
+
+
+def _clamping_symbols(inst: Instrument) -> dict[str, float]:
+    """The symbols of (247) and (249): i, i', λ, a, u (j comes from (247))."""
+    return {"i": inst.clamping_i, "i'": inst.clamping_i_prime, "lambda": inst.blade_length, "a": inst.a,
+            "u": inst.blade_u}
+
+
+def _clamping_j(inst: Instrument, used: dict[str, float]) -> dict[str, float]:
+    """j of (247): j + i + i' = (λ/(au))(iU_1 + i'U_2), the pendulum's tilt at equilibrium (n°32)."""
+    if CLAMP_SUM not in used:
+        return {}
+    return {"j": used[CLAMP_SUM] - inst.clamping_i - inst.clamping_i_prime}
+
+
+def _clamping_estimate(inst: Instrument) -> float:
+    """(λ/(16a))(3.8i² + 4.7|ij| + 2j²)/max(u, 1): (250)'s −(λ/(16au))(3i² + 4ij + 2j²) for u > 5, each
+    coefficient bounded over all u by the derived c_ii, c_ij, c_jj of (249) (16u|c| ≤ 3.7, 4.6, 2 and |c| ≤ 0.17,
+    0.21, 0.075 as u → 0); j from (247)."""
+    i, ip, u = inst.clamping_i, inst.clamping_i_prime, inst.blade_u
+    j = inst.blade_short / u * (i / math.sinh(u) + ip / math.tanh(u)) - i - ip
+    return inst.blade_short * (3.8 * i * i + 4.7 * abs(i * j) + 2 * j * j) / (16 * max(u, 1.0))
+
+
+def _clamping_error(rel: float, inst: Instrument) -> float:
+    """|ΔT/T| × (2R²/a² + (λ/a)(1 + 8/u²) + i² + i'²).  (249) is first order in λ/a with R² neglected before a²
+    (n°80), and i³, i'³ are neglected in (116) (ΔT/T is even in the angles: the next order is theirs squared).  The
+    coefficients of the next order in λ/a and R²/a² are not given by a Result: they were measured against the exact
+    tilted blade (pendsym.nonlinear_tilt, i = 0.02, i' = 0.01): the relative residual is 1.9R²/a² + c(λ/a) with
+    c = 1.07 at u = 3.46 and 3.1 at u = 1.73, which 1 + 8/u² bounds; tests/test_scene_clamping.py checks the bound at
+    another u."""
+    u = inst.blade_u
+    return abs(rel) * (2 * (inst.R / inst.a) ** 2 + inst.blade_short * (1 + 8 / u**2)
+                       + inst.clamping_i**2 + inst.clamping_i_prime**2)
+
+
 def effects() -> tuple[Effect, ...]:
     return (
         Effect("blade", "elastic blade instead of a knife edge (small oscillations)",
@@ -215,6 +258,13 @@ def effects() -> tuple[Effect, ...]:
                error=lambda rel, i: _next_order(rel, i, i.blade_mass / i.m),
                model="short uniform blade, first order in m'/m, leading order in λ/a", order=17,
                couples=("blade",)),
+        Effect("blade_clamping", "clamping errors of the short blade (angles i, i')",
+               "Haag 1935, ch. VI n°80, eq. (249) with j of (247) (ch. II n°31–34)", "haag1935.eq249.dT",
+               applies=_clamped, estimate=_clamping_estimate, symbols=_clamping_symbols,
+               uses=(CLAMP_SUM,), given=_clamping_j, relative=lambda value, i: value,
+               error=_clamping_error,
+               model="short uniform blade, first order in λ/a, second order in the angles", order=18,
+               couples=("blade",)),     # relative to the blade's linear period
         Effect("inverted_blade", "inverted blade, its slow vibration (linear theory)",
                "Haag 1935, ch. VIII n°101 with ch. III n°50: (34), (36), (30), u → iu, g → −g",
                "haag1935.eq034.n2_inverted", applies=_inverted, estimate=lambda i: math.inf,
@@ -255,8 +305,11 @@ def pending() -> tuple[Pending, ...]:
     long_blade = lambda i: is_blade(i) and i.blade_short > SHORT
     return (Pending("blade_isochronism_long", "blade at finite amplitude, λ/a > 0.1 (isochronism error)",
                     "Haag 1935, ch. II (111)–(112)", lambda i: long_blade(i) and i.alpha > 0),
-            Pending("blade_clamping", "clamping errors of the blade (their angles are not in the scene)",
-                    "Haag 1935, ch. II n°31–35, ch. VI n°80", is_blade),
+            Pending("blade_clamping", "clamping errors of the blade (give clamping.i and clamping.i_prime)",
+                    "Haag 1935, ch. II n°31–35, ch. VI n°80", lambda i: is_blade(i) and i.clamping_i is None),
+            Pending("blade_clamping_long", "clamping errors of a blade that is not short (λ/a > 0.1; no scene effect "
+                    "evaluates chapter II's (133))", "Haag 1935, ch. II n°34 (133)",
+                    lambda i: long_blade(i) and i.clamping_i is not None),
             Pending("blade_mass", "inertia and weight of the blade (give suspension.density; λ/a ≤ 0.1)",
                     "Haag 1935, ch. II n°36–37, ch. VI n°81", lambda i: is_blade(i) and not _massive(i)),
             Pending("inverted_clamping", "clamping errors of the inverted blade (their angles are not in the scene)",

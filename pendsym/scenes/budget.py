@@ -91,6 +91,8 @@ def instrument(sc: schema.Scene) -> Instrument:
             extra["blade_hole"] = sus.hole.width
         if sus.density is not None:
             extra["blade_mass"] = sus.density * sus.width * sus.thickness * sus.length
+    if sc.clamping is not None:
+        extra.update(clamping_i=sc.clamping.i, clamping_i_prime=sc.clamping.i_prime)
     if sc.support is not None:
         extra.update(support_K=sc.support.compliance, support_M=sc.support.mass)
     if sc.drift is not None:

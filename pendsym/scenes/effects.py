@@ -45,6 +45,8 @@ class Instrument:
     blade_mass: float | None = None        # m' = density × width × thickness × length, when the density is given
     blade_hole: float | None = None        # the width of a rhombus hole at the middle (its vertices at the clamps)
     blade_width: float | None = None
+    clamping_i: float | None = None        # Haag's i and i' (n°31), rad, when the scene gives clamping errors
+    clamping_i_prime: float | None = None
     support_K: float | None = None
     support_M: float = 0.0
     drift_rate: float | None = None        # dl/dt, m/s

@@ -74,6 +74,15 @@ class Drift(Strict):
     rate: float = num(-1e3, 1e3, "m/s", "rate dl/dt at which the length grows (negative: shortens)", open_lo=False)
 
 
+class Clamping(Strict):
+    """The clamping errors of a blade (Haag n°31): the clamp's tangent Ox makes the angle i with the vertical,
+    and the centre of gravity is off the tangent AT at the blade's lower clamp by the angle i'."""
+    i: float = num(-0.1, 0.1, "rad", "i: angle from the vertical to the tangent Ox of the blade at its upper "
+                   "clamp (Haag (116))", open_lo=False)
+    i_prime: float = num(-0.1, 0.1, "rad", "i': angle from the tangent AT of the blade at its lower clamp to the "
+                         "line AG to the centre of mass (Haag (116))", open_lo=False, default=0.0)
+
+
 class Temperature(Strict):
     """The thermal coefficients of a blade pendulum, per kelvin, named by the memoir's symbols: the blade's length,
     width and thickness grow by α (so that its I = e³h/12 grows by 4α), its modulus E by β, and the pendulum's a and
@@ -103,8 +112,8 @@ class Scene(Strict):
     suspension: Suspension
     support: Support | None = None
     drift: Drift | None = None
-    # keys the issue names that the memoirs treat but the engine does not evaluate yet: refused with the reason
-    clamping: object | None = Field(None, description="not supported yet (refused with the reason)")
+    clamping: Clamping | None = Field(None, description="the clamping errors of a direct blade (Haag n°31, "
+                                      "(247), (249))")
     temperature: Temperature | None = Field(None, description="the thermal coefficients of a blade suspension and "
                                             "of the pendulum, for the temperature coefficient")
     wanted: Wanted
@@ -113,10 +122,11 @@ class Scene(Strict):
     def consistent(self) -> "Scene":
         """Inputs that contradict each other are errors (each message names the keys)."""
         sus = self.suspension
-        if self.clamping is not None:
-            raise ValueError("clamping: not supported yet: the memoirs' clamping errors (listed as not available in the "
-                             "budget of a blade) need the clamps' angles i, i', j, which no scene effect evaluates yet "
-                             "(remove clamping)")
+        if self.clamping is not None and not (isinstance(sus, Blade) and sus.mounting == "direct"):
+            why = ("no scene effect evaluates the inverted blade's (318) yet" if isinstance(sus, Blade) else
+                   "the clamping errors are those of a blade (a thread's clamps play no part, Haag n°58)")
+            raise ValueError(f"clamping is given with a{'n inverted blade' if isinstance(sus, Blade) else ' ' + sus.kind}"
+                             f": {why} (remove clamping)")
         if self.temperature is not None and not isinstance(sus, Blade):
             raise ValueError(f"temperature is given with a {sus.kind} suspension: the memoirs' temperature "
                              "coefficients are those of a pendulum on a blade; remove "
