@@ -28,17 +28,24 @@ same G_2 is derived, by code, as a sum of positive terms:
 
 **The kernel** (:func:`kernel`, declared on eq346.G2_u_q).  Without step 5, make audit found 6.32 (Python), 6.55 (C)
 ulp × max(1, κ) at u = 1.81433, q = 0.128159 (135 and 141 of 20,000 points over 4), of which ~4 ulp were the
-roundings of the sums and the assembly; with it, see :data:`AUDIT`.
+roundings of the sums and the assembly; with it (session 12), make audit's machinery (``pendsym.audit.run.main
+--only eq346_G2_u_q``, 20,000 points with its adversarial search, on the kernel as the emitter prints it) measured
+3.47 ulp × max(1, κ) at worst, Python and C alike, at u = 1.58794, q = 0.0296435 (κ = 0.97; 4.57 ulp), no point
+over 4; C about 37 µs a call (26 cross products, most by the double-double Taylor series; on a loaded machine).
 
 **Domain**: u ∈ [0.05, π], q ∈ [1e-8, 2.5], the box of the other rhombus kernels (:mod:`.kernels`).  q = 2.5 is
 where the gap h reaches x_0/2: up to it the singular point x = 0 of the integrand lies at t = −x_0/h ≤ −2, so the
 12-node rule errs below 1e-23, and every cross product is Hankel's expansion or the double-double Taylor series.
-Above it the rule loses digits (665 ulp near q = 20: x = 0 comes to t ≈ −0.43) and bessel_cross calls the library's
-Bessel functions (the kernels of (343) measured up to 4.07 scaled ulp there).  The blade itself stays stable at every
-q for u ≤ π, so q > 2.5 is a gap of the kernel, not of the physics: closing it needs more nodes (about 16 at q = 20,
-30 at q = 200, by the rate (|z| + √(z² − 1))^(−2n), z = −1 − 2x_0/h), or a rule that takes the logarithm and pole
-of N_ab² at x = 0 into its weights, and cross products within an ulp where h > x_0/2; for q → ∞ a form in the
-small argument x_0 = 2u/q.
+Above it bessel_cross calls the library's Bessel
+functions, and the kernel with its box widened measured (session 12, 45 points of q ∈ [2.5, 5] against the derived
+(346) at 70 digits) up to 10.8 (Python, scipy's jv, yv) and 6.5 (C, glibc's j0 … y1) scaled ulp: the cross
+products near the zeros of the Bessel functions, not the rule (:func:`quadrature_residual`: 5e-20 relative at
+q = 5, but 2e-13 at q = 20, where x = 0 comes to t ≈ −0.43).  The blade itself stays stable at every q for u ≤ π,
+so q > 2.5 is a gap of the kernel, not of the physics: closing it needs cross products within an ulp where
+h > x_0/2 (the Taylor series about x_0 carried further, in steps, or the ODE of the cross product integrated in
+double-double), and from q ≈ 10 more nodes (about 16 at q = 20, 30 at q = 200, by the rate
+(|z| + √(z² − 1))^(−2n), z = −1 − 2x_0/h) or a rule that takes the logarithm and pole of N_ab² at x = 0 into its
+weights; for q → ∞ a form in the small argument x_0 = 2u/q.
 
 :func:`integral_residual` checks step 1–3 against the derived (346) by mpmath (the integrals by ``mpmath.quad`` at 50
 digits) and :func:`quadrature_residual` step 4; both are run by tests/test_haag1935_ch9_g2_kernel.py, not when the
@@ -274,8 +281,8 @@ NOTES = ("G_2/λ = h√(2q + 4)/(4u)·(I_01/N_00² + I_11/N_10²), h = x_1 − x
          "Domain: u ∈ [0.05, π] (the inverted blade exists up to u = π as q → 0, further as q grows); q ∈ [1e-8, 2.5]: "
          "up to q = 2.5 the integrand's singular point x = 0 lies at t ≤ −2, the 12-point rule errs below 1e-23 and "
          "every cross product is Hankel's expansion or the Taylor series in the gap. The blade is stable beyond, but "
-         "there the rule loses digits (665 ulp near q = 20): q > 2.5 is not declared (it needs more nodes, or a rule "
-         "weighted for x = 0, and cross products within an ulp by the Bessel functions themselves).")
+         "there the cross products come from the Bessel functions themselves (up to 10.8 scaled ulp measured in "
+         "q ∈ [2.5, 5]) and from q ≈ 10 the rule loses digits (2e-13 relative at q = 20): q > 2.5 is not declared.")
 
 
 def kernel() -> SuppliedKernelSpec:
