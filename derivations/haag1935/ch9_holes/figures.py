@@ -58,8 +58,8 @@ G2_RHOMBUS = Figure(
              "cancels. A stable form of G₂/λ in u = ωλ, q = kλ is derived (a sum of positive terms: quadratures of "
              "squared cross products of Bessel functions over the gap x₁ − x₀, every sum and product after the cross "
              "products compensated) and emitted as a kernel within 4 ulp × max(1, κ) for q = kλ from 1e-8 to 2.5; "
-             "the stable-kernel curve stops at k = 2.5, where its 12-point quadrature and its cross products stop "
-             "being shown accurate (a gap of the kernel, not of the blade: see below). "
+             "the stable-kernel curve ends at the last k below 2.5, its domain's end, where its cross products stop being "
+             "shown accurate (a gap of the kernel, not of the blade: see below). "
              "The blade stays stable (β₁ < 0, (304)) for every k: "
              "at ω, λ fixed the hole only stiffens it away from its middle, so there is no largest stable k; the "
              "axis stops at k = 1000 (M at the ends 501 M₀)."),
