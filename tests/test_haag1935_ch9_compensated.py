@@ -77,3 +77,25 @@ def test_plain_sum_fails_where_the_compensated_one_holds(tmp_path):
     (tmp_path / "sum").mkdir()
     for lang, fn in _emitted(tmp_path, "sum", cm.total([cm.exact(a_), cm.exact(b_), cm.exact(c_)]).value()).items():
         assert fn(*p) == 1.0 + 2.0**-52, lang
+
+
+def test_convert_compensates_a_whole_expression(tmp_path):
+    """:func:`convert` of an expression with a third, a square root, sin and cos, a negative power and a Piecewise:
+    within 1.5 ulp of mpmath at 300 points, Python and C (sin and cos by libm, within about half an ulp each, so that
+    their product alone may be off by an ulp; the rest adds ~2⁻¹⁰⁰); the plain double form of the same expression,
+    measured beside it, is worse (a test that can fail)."""
+    expr = sp.Piecewise(((a_ + b_ / 3) ** 2 / (c_ + 1) + sp.sin(a_ / c_) * sp.cos(b_), a_ < b_),
+                        (sp.sqrt(a_ * b_ + c_) / 7, True))
+    (tmp_path / "conv").mkdir()
+    (tmp_path / "plain").mkdir()
+    held = _emitted(tmp_path, "conv", cm.convert(expr, {}).value())
+    plain = _emitted(tmp_path, "plain", expr)
+    f = sp.lambdify((a_, b_, c_), expr, "mpmath")
+    worst = {"held": 0.0, "plain": 0.0}
+    for p in _points():
+        with mp.workdps(40):
+            true = f(*(mp.mpf(x) for x in p))
+        for kind, fns in (("held", held), ("plain", plain)):
+            for fn in fns.values():
+                worst[kind] = max(worst[kind], float(abs(mp.mpf(fn(*p)) - true)) / math.ulp(float(true)))
+    assert worst["held"] <= 1.5 and worst["plain"] > worst["held"] + 0.5, worst
