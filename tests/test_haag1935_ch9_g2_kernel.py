@@ -66,8 +66,8 @@ def test_quadrature_rule_error_is_far_below_an_ulp(uq):
 
 
 # ---------------------------------------------------------------- the form as it would be emitted
-# Not yet declared a kernel (make audit, 20,000 points: 6.32 Python, 6.55 C scaled ulp at u = 1.81433, q = 0.128159;
-# the earlier arrangement 6.86 at u = 1.5714, q = 1.83e-6); these tests hold the form as the engine would print it.
+# The kernel of eq346.G2_u_q (without its compensated sums make audit found 6.32 Python, 6.55 C scaled ulp at
+# u = 1.81433, q = 0.128159; an earlier arrangement 6.86 at u = 1.5714, q = 1.83e-6: both points are below).
 def _emitted(tmp_path):
     """{language: callable} of the supplied form printed as make derive prints a kernel."""
     form = g2k.supplied()
@@ -84,14 +84,15 @@ def _emitted(tmp_path):
 # (κ grows as N_10 → 0), u = 0.05, and the audit's worst points
 POINTS = [(1.7, 1e-8), (0.05, 1e-8), (3.141592653589793, 1e-8), (1.0, 0.08), (1.0, 0.07999999999999999),
           (1.0, 0.08000000000000002), (0.36, 0.052), (2.157, 0.5528), (1.8657914762268288, 2.4), (0.05, 2.5),
-          (3.141592653589793, 2.5), (3.14, 0.3), (0.3, 2.5)]
+          (3.141592653589793, 2.5), (3.14, 0.3), (0.3, 2.5), (1.81433, 0.128159), (1.5714, 1.83e-6),
+          (1.6121317476816759, 0.0008839050751482987)]
 
 
 @pytest.mark.slow
 def test_kernel_holds_the_contract_against_the_derived_form(tmp_path):
-    """G_2/λ within 4 ulp × max(1, κ) of the derived (346) (mpmath, 60 digits), Python and C, at the switches and
-    ends (the audit's search finds points over it: see rhombus_g2_kernel.supplied); a form scaled by 1 + 3e-15 fails
-    the same test at q = 1e-8 (κ ≈ 1 at u = 1.7)."""
+    """G_2/λ within 4 ulp × max(1, κ) of the derived (346) (mpmath, 70 digits), Python and C, at the switches, the
+    ends and the points where earlier forms failed make audit; a form scaled by 1 + 3e-15 fails the same test at
+    q = 1e-8 (κ ≈ 1 at u = 1.7)."""
     emitted = _emitted(tmp_path)
     for u_, q_ in POINTS:
         ref = kf.reference("G2", u_, q_, 70)
@@ -122,6 +123,14 @@ def test_kernel_outside_the_domain(tmp_path):
             emitted["Python"](u_, q_)
         if "C" in emitted:
             assert math.isnan(emitted["C"](u_, q_))
+
+
+def test_the_result_declares_the_kernel():
+    """eq346.G2_u_q carries the supplied form on the box of the (343) kernels."""
+    from derivations.haag1935.ch9_holes import rhombus_table_kernels
+    spec = next(s for s in rhombus_table_kernels.specs() if s.id == "haag1935.eq346.G2_u_q")
+    assert isinstance(spec.kernel, supplied.SuppliedKernelSpec) and spec.kernel.form == g2k.supplied()
+    assert spec.kernel.args == ARGS and (ARGS[1].lo, ARGS[1].hi) == (1e-8, 2.5)
 
 
 @needs_libm

@@ -1,13 +1,14 @@
-"""Haag 1935, chapter IX, n°105–106: toward the kernel of G_2/λ of the blade with a concentric rectangular hole (issue #14).
+"""Haag 1935, chapter IX, n°105–106: the kernel of G_2/λ of the blade with a concentric rectangular hole (issue #14).
 
-**Status: not declared.**  The supplied form below (:func:`short_form`, :func:`kernel`) holds the contract on the
-derive sample (254 points: 2.31 scaled ulp, Python and C) but not in the audit (``python -m pendsym.audit --only
-eq333_G2_concentric_u``, 20,000 points with its adversarial search): :data:`AUDIT`.  So the Result of
-:mod:`.rectangle_table_kernels` carries no KernelSpec, and no kernel is emitted.  What is left is rounding, not
-cancellation: ~25 operations on the path of the value, the slope D squared (its own rounding and sin α's doubled),
-where κ = 1 (u near π/2) allows 4 ulp and κ = 2 (u → 0, G_2 ∝ 1/u²) 8; the worst points found are close to the
-uniform blade (u_p and ρ small).  A way on: the slope D and the squares in double-double (Dekker's products; the
-helpers are :mod:`pendsym.emit.kernels.supplied`'s), or a form with fewer operations near the uniform blade.
+**Status: declared** (session 12) with :func:`compensated_form`: the half-blade form below (:func:`short_form`),
+every operation after libm's sin and cos compensated (:mod:`.compensated`: two-sum, exact residuals by the helper
+``quotient_low``).  :func:`short_form` alone held the contract on the derive sample (254 points: 2.31 scaled ulp,
+Python and C) but not in the audit (``python -m pendsym.audit --only eq333_G2_concentric_u``, 20,000 points with
+its adversarial search): :data:`AUDIT`.  What was left was rounding, not cancellation: ~25 operations on the path
+of the value, the slope D squared (its own rounding and sin α's doubled), where κ = 1 (u near π/2) allows 4 ulp and
+κ = 2 (u → 0, G_2 ∝ 1/u²) 8; the worst points were close to the uniform blade (u_p and ρ small).  Compensated,
+those roundings go; what is left is libm's sin and cos (each within an ulp) carried to first order: 1.69 scaled ulp
+in the audit (κ = 2.04 there; Python and C alike, none of 20,000 points over 4), C about 500 ns a call.
 
 **Arguments.**  G_2 of (333) is a length and depends on ω, ω', λ, s_0, p; for the concentric hole of n°106's footnote
 (λ − s_1 = s_0, i.e. s_0 = (λ − p)/2) G_2/λ is a function of three dimensionless numbers (:func:`concentric_scaled`,
@@ -64,7 +65,7 @@ from pendsym.emit.kernels.supplied import SuppliedKernelSpec
 from pendsym.result import KernelArg
 
 from ..symbols import lam, omega, u
-from . import rectangle_derivation as rd
+from . import compensated, rectangle_derivation as rd
 
 u_p = sp.Symbol("u_p", positive=True)        # u_p = ω'p, the hole's phase
 rho = sp.Symbol("rho", positive=True)        # ρ = p/λ
@@ -79,8 +80,10 @@ AUDIT = (
     ("the plain half-blade form, left to cse", 5.39, 83, (1.5707963267948966, 0.1350652078039178, 0.07934248049565838)),
     ("its parts Grouped, cω and ωb shared by D", 6.33, 41,
      (1.5707963252241002, 0.0029873161605352477, 0.0005780150330459939)),
-    ("ω(b + cX/C) as ωb + cω·X/C (this form)", 4.40, 44,
-     (0.03126596553082553, 3.5722303520047847e-06, 1.7013865218909938e-06)))
+    ("ω(b + cX/C) as ωb + cω·X/C (short_form)", 4.40, 44,
+     (0.03126596553082553, 3.5722303520047847e-06, 1.7013865218909938e-06)),
+    ("short_form compensated (compensated_form, the kernel; session 12)", 1.69, 0,
+     (0.2794498684478546, 0.781780565354073, 2.2845813098178616e-05)))
 
 
 def concentric_scaled(g2: sp.Expr) -> sp.Expr:
@@ -200,6 +203,19 @@ def short_form() -> sp.Expr:
     return _pieces_as_written(True)
 
 
+@functools.lru_cache(maxsize=None)
+def compensated_form() -> sp.Expr:
+    """The kernel's form: :func:`short_form` with every sum, product, quotient and square compensated
+    (:func:`.compensated.convert`: the same operations in the same arrangement, each with its exact rounding error
+    carried in a low part; sin and cos of (α, β) by libm at the high part, corrected to first order for the low).
+    Measured (session 12) against the test's reference (∫w²/|M| ds by mpmath, tests/test_haag1935_ch9_rectangle_kernels.py)
+    at its 19 points, the plain form's audit worst points and 100 random points of the box: 0.91 scaled ulp at
+    worst (Python = C), where :func:`short_form` measured 4.40; make audit's worst point of this form: 1.69
+    (:data:`AUDIT`).  Its one Piecewise (α's two arrangements) becomes a Select of both (:func:`.compensated._choice`),
+    both safe on the whole box."""
+    return compensated.convert(short_form(), {}).value()
+
+
 def ungrouped(expr: sp.Expr) -> sp.Expr:
     """expr with each :class:`Grouped` part replaced by its value (Grouped orders the kernel's operations only)."""
     return expr.replace(Grouped, lambda arg: arg).replace(sp.Piecewise, lambda *pieces: pieces[-1][0])
@@ -223,15 +239,19 @@ def checked_short_form(derived: sp.Expr) -> sp.Expr:
 
 NOTES = ("G_2 = 2∫_0^{λ/2}(w_e² + w_o²)/M over the half blade (w even and odd about the middle, slope ½ at each end), "
          "each blade piece ω∫(b cos + c sin)² written as C(b + cX/C)² + c²(α² − sin²α)/(4C), α = u(1 − ρ)/2; "
-         "x − sin x (x = α ≤ π/4 and x = u_p ≤ π/2) by its Taylor polynomial in Horner form.",)
+         "x − sin x (x = α ≤ π/4 and x = u_p ≤ π/2) by its Taylor polynomial in Horner form.",
+         "Every operation after libm's sin and cos is compensated (two-sum, exact residuals by quotient_low): the "
+         "value is as if computed in twice the precision from sin and cos.",
+         "Domain: u, u_p ∈ [1e-6, π/2], ρ ∈ [1e-6, 1 − 1e-6]: the stable region of n°106's footnote (ωλ < π/2, "
+         "ω'p < π/2) as a box; G_2/λ ~ 1/u² as u → 0.")
 
 
 def kernel() -> SuppliedKernelSpec:
-    """The KernelSpec of G_2/λ in (u, u_p, ρ).  Its form is not compared with the derived (333) here (that needs
-    the Result, built later): the kernel stage measures it against the derived form on its sample, and
-    :func:`checked_short_form` is a test."""
+    """The KernelSpec of G_2/λ in (u, u_p, ρ), :func:`compensated_form`.  Its form is not compared with the derived
+    (333) here (that needs the Result, built later): the kernel stage measures it against the derived form on its
+    sample, and :func:`checked_short_form` is a test."""
     return SuppliedKernelSpec(
-        args=(U_ARG, UP_ARG, RHO_ARG), form=short_form(), rule="supplied: half blade, sums of squares",
+        args=(U_ARG, UP_ARG, RHO_ARG), form=compensated_form(), rule="supplied: half blade, sums of squares, compensated",
         notes=NOTES,
         doc="G_2/λ of the inverted blade with a concentric rectangular hole (333), in u = ωλ, u_p = ω'p, ρ = p/λ "
             "(n°106 footnote: stable for u < π/2, u_p < π/2); G_2/λ ~ 1/u² as u → 0.")

@@ -1,6 +1,6 @@
 """Haag 1935, chapter IX, n°105–106: G_2/λ of the concentric rectangular hole in u = ωλ, u_p = ω'p, ρ = p/λ, the
-Result a kernel of G_2 is to be emitted from (:mod:`.rectangle_kernels`: its supplied form is derived and tested, but
-no KernelSpec is declared, because the form does not hold the contract in the audit: 4.4 scaled ulp).
+Result the kernel of G_2 is emitted from (:mod:`.rectangle_kernels`: a supplied form, derived and tested, its
+operations compensated since session 12; without that it measured 4.4 scaled ulp in the audit).
 
 The Result is the derived (333) (:mod:`.rectangle_derivation`) with s_0 = (λ − p)/2, ω = u/λ, ω' = u_p/(ρλ),
 p = ρλ, divided by λ (:func:`.rectangle_kernels.concentric_scaled`: an error if λ remains); it is checked against
@@ -50,12 +50,12 @@ def on_concentric_blade() -> checks.Values:
 
 
 def specs() -> tuple[Spec, ...]:
-    return (                            # no kernel: :data:`.rectangle_kernels.AUDIT` (the form is over the bound)
+    return (
         Spec(rid(333, "G2_concentric_u"), "G_2/λ of the concentric rectangular hole in u = ωλ, u_p = ω'p, ρ = p/λ",
              src("n°105–106 (333), concentric hole (footnote of n°106)", None), r"G_2/\lambda",
              lambda deps: kernels.concentric_scaled(deps[rid(333, "G2")].derived), deps=(rid(333, "G2"),),
-             check=on_concentric_blade(),
+             check=on_concentric_blade(), kernel=kernels.kernel(),
              note="(333) over λ with s_0 = (λ − p)/2, ω = u/λ, ω' = u_p/(ρλ), p = ρλ: G_2/λ of a concentric hole is "
-                  "a function of u, u_p, ρ, the three arguments of the kernel it is meant for; n°106's footnote (stable for "
+                  "a function of u, u_p, ρ, the three arguments of its kernel; n°106's footnote (stable for "
                   "ωλ < π/2, ω'p < π/2) is then a box."),
     )

@@ -21,10 +21,31 @@ same G_2 is derived, by code, as a sum of positive terms:
    below (5 + √24)^(−2n) ≈ 1e-23 for n = 12; each N_ab by ``bessel_cross`` (Hankel's expansion, the Taylor series
    in the gap, or the library's Bessel functions), from x_0 = 2u/q as a double-double and the gap th.
 
-**Not yet a kernel.**  :func:`kernel` is the KernelSpec to attach to eq346.G2_u_q once ``make audit`` passes: on the
-derive's sample the form holds 2.8 ulp × max(1, κ), but the audit's search (20,000 points) found 6.86 at u = 1.5714,
-q = 1.83e-6 (κ ≈ 1) for the first arrangement; this one (:func:`supplied`) measures 3.86 there, but its own audit found
-6.32 (Python), 6.55 (C) at u = 1.81433, q = 0.128159 (135 and 141 of 20,000 points over 4).
+5. the sums and the assembly compensated (:mod:`.compensated`): the squares of the cross products, the weights
+   and nodes as double-doubles, the two sums of twelve terms by two-sum, the quotients by N_a0² and the factor
+   h√(2q + 4)/(4u) by exact residuals (``quotient_low``); what is left is the cross products' own error (~1 ulp
+   each, 2 in N_a0²).
+
+**The kernel** (:func:`kernel`, declared on eq346.G2_u_q).  Without step 5, make audit found 6.32 (Python), 6.55 (C)
+ulp × max(1, κ) at u = 1.81433, q = 0.128159 (135 and 141 of 20,000 points over 4), of which ~4 ulp were the
+roundings of the sums and the assembly; with it (session 12), make audit's machinery (``pendsym.audit.run.main
+--only eq346_G2_u_q``, 20,000 points with its adversarial search, on the kernel as the emitter prints it) measured
+3.47 ulp × max(1, κ) at worst, Python and C alike, at u = 1.58794, q = 0.0296435 (κ = 0.97; 4.57 ulp), no point
+over 4; C about 37 µs a call (26 cross products, most by the double-double Taylor series; on a loaded machine).
+
+**Domain**: u ∈ [0.05, π], q ∈ [1e-8, 2.5], the box of the other rhombus kernels (:mod:`.kernels`).  q = 2.5 is
+where the gap h reaches x_0/2: up to it the singular point x = 0 of the integrand lies at t = −x_0/h ≤ −2, so the
+12-node rule errs below 1e-23, and every cross product is Hankel's expansion or the double-double Taylor series.
+Above it bessel_cross calls the library's Bessel
+functions, and the kernel with its box widened measured (session 12, 45 points of q ∈ [2.5, 5] against the derived
+(346) at 70 digits) up to 10.8 (Python, scipy's jv, yv) and 6.5 (C, glibc's j0 … y1) scaled ulp: the cross
+products near the zeros of the Bessel functions, not the rule (:func:`quadrature_residual`: 5e-20 relative at
+q = 5, but 2e-13 at q = 20, where x = 0 comes to t ≈ −0.43).  The blade itself stays stable at every q for u ≤ π,
+so q > 2.5 is a gap of the kernel, not of the physics: closing it needs cross products within an ulp where
+h > x_0/2 (the Taylor series about x_0 carried further, in steps, or the ODE of the cross product integrated in
+double-double), and from q ≈ 10 more nodes (about 16 at q = 20, 30 at q = 200, by the rate
+(|z| + √(z² − 1))^(−2n), z = −1 − 2x_0/h) or a rule that takes the logarithm and pole of N_ab² at x = 0 into its
+weights; for q → ∞ a form in the small argument x_0 = 2u/q.
 
 :func:`integral_residual` checks step 1–3 against the derived (346) by mpmath (the integrals by ``mpmath.quad`` at 50
 digits) and :func:`quadrature_residual` step 4; both are run by tests/test_haag1935_ch9_g2_kernel.py, not when the
@@ -40,7 +61,7 @@ import sympy as sp
 from pendsym.emit.kernels.supplied import BesselCross, QuotientLow, RootQuotient, SuppliedKernelSpec
 
 from ..symbols import lam, omega, u
-from . import kernel_forms, kernels, rhombus_derivation as derivation
+from . import compensated as cm, kernel_forms, kernels, rhombus_derivation as derivation
 
 q = kernel_forms.q
 x, x0, x1, k = derivation.x, derivation.x0, derivation.x1, derivation.k
@@ -205,41 +226,67 @@ def quadrature_residual(u_, q_, n: int = NODES, dps: int = 40) -> float:
                          for a, sym in ((0, I01), (1, I11))))
 
 
+def factor_parts() -> tuple[sp.Expr, sp.Expr]:
+    """c(q) = h√(2q + 4)/(4u) of :func:`scaled_in_cross` (form = c·(I_01/N_00² + I_11/N_10²)) as (the gap h, the rest
+    √(2q + 4)/(4u)): read off the derived form, an error if it is not so."""
+    form = scaled_in_cross()
+    factor = sp.factor(sp.diff(form, I01) * N00**2)
+    if sp.simplify(form - factor * (I01 / N00**2 + I11 / N10**2)) != 0 or factor.free_symbols - {u, q}:
+        raise ValueError(f"G_2/λ is not a function of u, q times I_01/N_00² + I_11/N_10²: {form}")
+    gap = kernel_forms.end_gap()
+    if sp.simplify(gap - u / (1 + sp.sqrt(1 + q / 2))) != 0:
+        raise ValueError(f"the gap {gap} is not u/(1 + √(1 + q/2))")
+    rest = sp.simplify(factor / gap)
+    if sp.simplify(rest - sp.sqrt(2 * q + 4) / (4 * u)) != 0:
+        raise ValueError(f"c(q)/h is not √(2q + 4)/(4u): {rest}")
+    return gap, rest
+
+
 @functools.lru_cache(maxsize=None)
 def supplied() -> sp.Expr:
-    """The form of G_2/λ in u, q: :func:`scaled_in_cross` as c(q)·(I_01/N_00² + I_11/N_10²), each I_ab/N_a0² as
-    Σ w_i N_ab(x_0 + t_i h)²/N_a0² over :func:`gauss_legendre` (nodes and weights rounded to doubles), every N by
-    ``bessel_cross``, x_0 = 2u/q as a double-double, the gap u/(1 + √(1 + q/2)) as a double-double (t_i times each
-    part).  Measured (session 11) against the derived (346): within 4 ulp × max(1, κ) on the derive's sample (2.77)
-    but not on make audit's search: 6.86 at u = 1.5714, q = 1.83e-6 (κ ≈ 1) for the arrangement
-    c·(I_01N_10² + I_11N_00²)/(N_00²N_10²), 3.86 there for this one, but 3.77 (Python; C 3.38) on the derive's sample
-    where the first held 2.77, and make audit 6.32 (Python), 6.55 (C) at u = 1.81433, q = 0.128159: neither is within 4.  The inherent part is N_00 (≈ 1 ulp, 2 in its square); the
-    rest, ~4 ulp, is the roundings of the sums and the assembly (with them exact, 2.67 at the audit's point): a
-    double-double sum and assembly (a helper) would close it."""
+    """The form of G_2/λ in u, q: c·(S_0/N_00² + S_1/N_10²), S_a = Σ w_i N_a1(x_0 + t_i h)² over :func:`gauss_legendre`
+    (I_ab = S_a), every N by ``bessel_cross`` from x_0 = 2u/q as a double-double and the node's gap t_i·h as a
+    double-double (t_i, h and their product each with its low part), c = h·√(2q + 4)/(4u) (:func:`factor_parts`).
+    Every operation after the cross products is compensated (:mod:`.compensated`: the squares, the weights as
+    double-doubles, the two sums of twelve terms, the quotients, c): what is left is the cross products' own error.
+    Measured (session 11) without the compensation: 2.77 scaled ulp on the derive's sample but 6.32 (Python), 6.55 (C)
+    by make audit at u = 1.81433, q = 0.128159, of which ~4 ulp the roundings of the sums and the assembly."""
     X0 = 2 * u / q
     low = QuotientLow(2 * u, q, X0)
-    gap, gap_low = RootQuotient(u, q / 2, 0), RootQuotient(u, q / 2, 1)
     x0_s, x1_s = kernel_forms.arguments()
     if sp.simplify(x0_s - X0) != 0 or sp.simplify(x1_s - u * sp.sqrt(2 * q + 4) / q) != 0:
         raise ValueError(f"(334) in u, q is not x_0 = 2u/q, x_1 = (u/q)√(2q + 4): {x0_s}, {x1_s}")
-    form = scaled_in_cross()
-    factor = sp.factor(sp.diff(form, I01) * N00**2)            # form = factor·(I_01/N_00² + I_11/N_10²)
-    if sp.simplify(form - factor * (I01 / N00**2 + I11 / N10**2)) != 0 or factor.free_symbols - {u, q}:
-        raise ValueError(f"G_2/λ is not a function of u, q times I_01/N_00² + I_11/N_10²: {form}")
-    rule = [(sp.Float(float(t), 17), sp.Float(float(w), 17)) for t, w in gauss_legendre()]
-    ends = {a: BesselCross(a, 0, X0, low, gap, gap_low) for a in (0, 1)}          # N_00, N_10
-    terms = [w * BesselCross(a, 1, X0, low, t * gap, t * gap_low) ** 2 / ends[a] ** 2 for a in (0, 1) for t, w in rule]
-    return factor * sp.Add(*terms)
+    factor_parts()                                      # c = h·√(2q + 4)/(4u), checked
+    gap = cm.Pair(RootQuotient(u, q / 2, 0), RootQuotient(u, q / 2, 1))    # h = u/(1 + √(1 + q/2))
+    c = cm.div(cm.mul(gap, cm.root(cm.add(cm.exact(2 * q), cm.exact(sp.Integer(4))))), cm.exact(4 * u))
+    rule = [(cm.constant(t), cm.constant(w)) for t, w in gauss_legendre()]
+    parts = []
+    for a in (0, 1):
+        end = cm.exact(BesselCross(a, 0, X0, low, gap.hi, gap.lo))                    # N_00, N_10
+        terms = []
+        for t, w in rule:
+            at = cm.mul(t, gap)
+            terms.append(cm.mul(w, cm.square(cm.exact(BesselCross(a, 1, X0, low, at.hi, at.lo)))))
+        parts.append(cm.div(cm.total(terms), cm.square(end)))
+    return cm.mul(c, cm.add(*parts)).value()
 
 
 NOTES = ("G_2/λ = h√(2q + 4)/(4u)·(I_01/N_00² + I_11/N_10²), h = x_1 − x_0 = u/(1 + √(1 + q/2)), derived from (346) "
          "(module rhombus_g2_kernel): N_ab = (π√(x_0x)/2)(Y_a(x_0)J_b(x) − J_a(x_0)Y_b(x)) and I_ab = ∫_0^1 N_ab(x_0 + th)² dt, "
          "a sum of positive terms where (346) subtracts terms of order 1/k.",
-         f"I_ab by the {NODES}-point Gauss–Legendre rule in t; each N_ab by the helper bessel_cross ({kernels.NOTES[0]})")
+         f"I_ab by the {NODES}-point Gauss–Legendre rule in t; each N_ab by the helper bessel_cross ({kernels.NOTES[0]})",
+         "Every operation after the cross products is compensated (two-sum, exact residuals by quotient_low): the "
+         "squares, the weighted sums, the quotients and the factor h√(2q + 4)/(4u) add well under an ulp to the cross "
+         "products' own error.",
+         "Domain: u ∈ [0.05, π] (the inverted blade exists up to u = π as q → 0, further as q grows); q ∈ [1e-8, 2.5]: "
+         "up to q = 2.5 the integrand's singular point x = 0 lies at t ≤ −2, the 12-point rule errs below 1e-23 and "
+         "every cross product is Hankel's expansion or the Taylor series in the gap. The blade is stable beyond, but "
+         "there the cross products come from the Bessel functions themselves (up to 10.8 scaled ulp measured in "
+         "q ∈ [2.5, 5]) and from q ≈ 10 the rule loses digits (2e-13 relative at q = 20): q > 2.5 is not declared.")
 
 
 def kernel() -> SuppliedKernelSpec:
-    """The KernelSpec of G_2/λ (u, q on the box of :mod:`.kernels`), not attached to a Result until make audit passes."""
+    """The KernelSpec of G_2/λ (u, q on the box of :mod:`.kernels`), declared on eq346.G2_u_q."""
     return SuppliedKernelSpec(args=(kernels.U_ARG, kernels.Q_ARG), form=supplied(),
                               rule="supplied: positive quadrature of cross products by bessel_cross", notes=NOTES,
                               doc="G_2/λ of the inverted rhombus blade (346), G_2 = ∫ w²/M ds, in u = ωλ and q = kλ "

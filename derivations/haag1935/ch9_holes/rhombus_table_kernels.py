@@ -4,7 +4,7 @@ with their kernels.
 Each Result is the derived (343) with x_0, x_1 of (334), ω = u/λ, k = q/λ, divided by λ (:func:`.kernel_forms.scaled_from`:
 an error if λ remains); checked against the inverted blade shot at (M0, k, λ), no Bessel function
 (:mod:`.rhombus_truth`), at u = λ/√M0, q = kλ.  The kernels' supplied forms: :mod:`.kernels` for (343),
-:mod:`.rhombus_g2_kernel` for (346) (not yet declared a kernel: see the note of eq346.G2_u_q).
+:mod:`.rhombus_g2_kernel` for (346) (a positive quadrature of cross products, its sums compensated).
 """
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from pendsym.result import Spec
 
 from ..common import TOL, rid, src
 from ..symbols import u
-from . import kernel_forms, kernels, rhombus_truth as truth
+from . import kernel_forms, kernels, rhombus_g2_kernel, rhombus_truth as truth
 
 NAMES = {"v0": ("v_0", "v0"), "w0": ("w_0", "w0"), "wl": (r"w_\lambda", "wl")}
 TITLES = {"v0": "v_0", "w0": "w_0", "wl": "w_λ"}        # (plain text: a title is not TeX)
@@ -45,12 +45,11 @@ def specs() -> tuple[Spec, ...]:
     return ends() + (
         Spec(rid(346, "G2_u_q"), "G_2/λ of the rhombus blade in u = ωλ, q = kλ", src("n°110 (346) in u = ωλ, q = kλ", None),
              r"G_2/\lambda", lambda deps: kernel_forms.scaled_from(deps[rid(346, "G2")].derived, "G2"),
-             deps=(rid(346, "G2"),), check=on_shot_blade("G2"),
+             deps=(rid(346, "G2"),), check=on_shot_blade("G2"), kernel=rhombus_g2_kernel.kernel(),
              note="(346) over λ with x_0 = 2u/q, x_1 = (u/q)√(2q + 4) ((334), λ = 1): G_2 is λ times a function of u "
-                  "and q. No kernel is declared yet: the stable form of rhombus_g2_kernel (a sum of positive terms "
-                  "derived from (346), which subtracts terms of order 1/k) holds 4 ulp × max(1, κ) on the derive's "
-                  "sample but not on make audit's search (two arrangements: 6.86 at u = 1.571, q = 1.8e-6; 6.55 at u = 1.814, "
-                  "q = 0.128)."),)
+                  "and q. Its kernel is the stable form of rhombus_g2_kernel: a sum of positive terms derived from "
+                  "(346), which subtracts terms of order 1/k, every operation after the Bessel cross products "
+                  "compensated (module compensated)."),)
 
 
 def ends() -> tuple[Spec, ...]:
