@@ -165,7 +165,11 @@ def integrate_exp_poly(f: sp.Expr, upper: sp.Expr) -> sp.Expr:
 
 
 def integrate_along_blade(expr_s: sp.Expr, upper: sp.Expr | None = None) -> sp.Expr:
-    """∫_0^{upper or λ} expr ds for an expression in e^{±us/λ} and s (substitution s = λt/u)."""
-    f = hyperbolic_to_exp(expr_s).subs(s, lam * reduced_abscissa / u)
+    """∫_0^{upper or λ} expr ds for an expression in e^{±us/λ} and s (substitution s = λt/u).
+
+    Only the hyperbolic functions of s are rewritten as exponentials: those of u alone (th(u/2) in the
+    coefficients of (183)) stay whole, which keeps the cancellation small (the value is the same)."""
+    of_s = expr_s.replace(lambda x: isinstance(x, HyperbolicFunction) and x.has(s), lambda x: x.rewrite(sp.exp))
+    f = of_s.subs(s, lam * reduced_abscissa / u)
     top = u if upper is None else sp.expand(u * upper / lam)
     return integrate_exp_poly(f, top) * lam / u
