@@ -4,7 +4,7 @@ VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: lock derive test test-quick report bench bench-derive audit tex-tools clean
+.PHONY: lock derive test test-quick report bench bench-derive bench-derive-original audit tex-tools clean
 
 $(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -65,6 +65,9 @@ audit: $(STAMP)
 # cold, no-op and one-section-changed derive, on a copy of the tree with a cache of its own
 bench-derive: $(STAMP)
 	$(BIN)/python -m pendsym.bench_derive --out generated/bench
+
+bench-derive-original: $(STAMP)
+	$(BIN)/python -m pendsym.bench_derive --original-only --out generated/bench
 
 clean:
 	rm -rf build $(VENV) .cache/pendsym

@@ -68,3 +68,14 @@ def test_polynomial_in_K():
     assert sp.Poly(poly, K).degree() == 2
     at = {K: sp.Rational(3, 10), u: sp.Rational(11, 10)}
     assert abs(sp.N((poly - (K * sp.sinh(u) + 1 / sp.cosh(u)) ** 2).subs(at), 30)) < 1e-25
+
+
+def test_with_tanh_half_symbol_is_the_same_rational_function_as_in_tanh_half():
+    n = sp.Symbol("n")
+    only_tanh_half = ((K * sp.tanh(u / 2) ** 2 + 1) / (2 * sp.tanh(u / 2))) ** (n - 1) * K / u + lam * sp.tanh(u / 2)
+    symbolic = rational.with_tanh_half_symbol(only_tanh_half)
+    assert not symbolic.has(sp.tanh) and symbolic.has(rational.tanh_half)
+    at_3 = sp.cancel(symbolic.subs(n, 3))
+    assert sp.srepr(at_3) == sp.srepr(rational.in_tanh_half(only_tanh_half.subs(n, 3)))
+    other = sp.tanh(u) + sp.exp(u) * K          # other functions of u: the full rewrite
+    assert sp.srepr(rational.with_tanh_half_symbol(other)) == sp.srepr(rational.in_tanh_half(other))

@@ -9,6 +9,8 @@ specialise (58).  A step that uses other Results takes them as ``deps`` (by id).
 """
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from .. import ch1_model
@@ -209,8 +211,11 @@ def x_54(deps):
     return A * v(s) + (B + homogeneous_part(A.subs(s, lam), B.subs(s, lam))) * w(s)
 
 
+@functools.lru_cache(maxsize=None)
 def x_ends(fn):
-    """(x0, xλ) for x = Av + (B + Aλ − Bλ)w (54): A(0) = B(0) = 0, v'(λ) = −1, w'(λ) = 1, w'(0) = 0 (10)."""
+    """(x0, xλ) for x = Av + (B + Aλ − Bλ)w (54): A(0) = B(0) = 0, v'(λ) = −1, w'(λ) = 1, w'(0) = 0 (10).
+
+    Remembered per fn: (56) and (57) take the two ends of one solve."""
     A_prime, B_prime = variation_of_constants(fn)
     A_lambda = sp.Integral(A_prime, (s, 0, lam))
     B_lambda = sp.Integral(B_prime, (s, 0, lam))

@@ -215,6 +215,7 @@ def series3(expr: sp.Expr, scale: dict) -> sp.Expr:
     return sp.expand(sp.series(scaled, small, 0, 4).removeO().subs(small, 1))
 
 
+@functools.lru_cache(maxsize=1)
 def eq106() -> sp.Tuple:
     """(106): (gε1, gε2, ε3, ε') — the exact terms of (4), (5), (6), (7) beyond the first approximation,
     to the third order in θ, θ', θ'', Y, φ (α'' kept as second order; X = 1 + O(2) in ε3)."""
@@ -298,6 +299,7 @@ def principal(expr: sp.Expr) -> sp.Expr:
     return sp.expand(e.subs(n_squared, -K * g / zp))
 
 
+@functools.lru_cache(maxsize=1)
 def f_principal() -> sp.Expr:
     """f = −(n²/K)·(109) in the principal oscillation: a polynomial A n²θ³ + B θθ'² (n°29)."""
     return sp.expand(-n_squared / K * principal(eq109_bracket()))
@@ -314,6 +316,7 @@ def eq114_relative() -> sp.Expr:
     return sp.expand(rel)
 
 
+@functools.lru_cache(maxsize=1)
 def delta_T_over_T() -> sp.Expr:
     """(111) before Q, Q': ΔT/T of the principal oscillation from f (n°29) by (114), the perturbation of θ''
     being f/(z − z') (y = (z − z')θ)."""

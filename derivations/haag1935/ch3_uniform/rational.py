@@ -55,6 +55,18 @@ def in_tanh_half(expr: sp.Expr) -> sp.Expr:
                      sp.together(parts[1].subs(exp_u, exp_u_in_tanh)))
 
 
+def with_tanh_half_symbol(expr: sp.Expr) -> sp.Expr:
+    """expr rational in th(u/2) (the symbol :data:`tanh_half`), not cancelled: th(u/2) replaced by the
+    symbol when it is expr's only function of u (expr is then rational in it as it stands), else
+    :func:`in_tanh_half`.  Substituting into the uncancelled form and cancelling once is much cheaper
+    than cancelling the substitution into :func:`in_tanh_half`'s expanded form, and gives the same
+    rational function (the recurrences (164), (167))."""
+    functions_of_u = {f for f in expr.atoms(sp.Function) if f.has(u)}
+    if functions_of_u <= {TANH_HALF} and not any(p.exp.has(u) for p in expr.atoms(sp.Pow)):
+        return expr.subs(TANH_HALF, tanh_half)
+    return in_tanh_half(expr)
+
+
 def from_tanh_half(expr: sp.Expr) -> sp.Expr:
     """A rational function of :data:`tanh_half`, factored and written back with th(u/2)."""
     return sp.factor(expr).subs(tanh_half, TANH_HALF)
@@ -153,7 +165,11 @@ def integrate_exp_poly(f: sp.Expr, upper: sp.Expr) -> sp.Expr:
 
 
 def integrate_along_blade(expr_s: sp.Expr, upper: sp.Expr | None = None) -> sp.Expr:
-    """∫_0^{upper or λ} expr ds for an expression in e^{±us/λ} and s (substitution s = λt/u)."""
-    f = hyperbolic_to_exp(expr_s).subs(s, lam * reduced_abscissa / u)
+    """∫_0^{upper or λ} expr ds for an expression in e^{±us/λ} and s (substitution s = λt/u).
+
+    Only the hyperbolic functions of s are rewritten as exponentials: those of u alone (th(u/2) in the
+    coefficients of (183)) stay whole, which keeps the cancellation small (the value is the same)."""
+    of_s = expr_s.replace(lambda x: isinstance(x, HyperbolicFunction) and x.has(s), lambda x: x.rewrite(sp.exp))
+    f = of_s.subs(s, lam * reduced_abscissa / u)
     top = u if upper is None else sp.expand(u * upper / lam)
     return integrate_exp_poly(f, top) * lam / u

@@ -6,6 +6,8 @@ negative M (trigonometric, by dsolve), not by u → iu.
 """
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from pendsym import blade
@@ -19,8 +21,10 @@ def derived_of(deps, eq: int, name: str) -> sp.Expr:
     return deps[rid(eq, name)].derived
 
 
+@functools.lru_cache(maxsize=None)
 def rotated(expr: sp.Expr) -> sp.Expr:
-    """u → iu (n°101), written with circular functions."""
+    """u → iu (n°101), written with circular functions.  Remembered: the ends (159) are rotated for (313),
+    (310) and n² alike."""
     return sp.simplify(sp.expand_complex(sp.expand(expr.rewrite(sp.cosh)).subs(u, sp.I * u)))
 
 
