@@ -89,12 +89,23 @@ def test_end_state_is_the_trigonometric_elastica():
     assert abs(end.theta) > 0.05
 
 
+SMALL = mp.mpf("0.002")
+
+
+@pytest.fixture(scope="module")
+def small_orbit():
+    """The orbit at θ0 = SMALL (4 nodes, 30 digits, the default first stage at LADDER_DPS digits), computed once
+    for the two tests that read it (it was computed twice, ~6 s of CPU each)."""
+    nonlinear_blade._first_stage.cache_clear()
+    return nonlinear_blade.orbit(UNIFORM, *CLOCK, SMALL, 4, 30)
+
+
 @pytest.mark.slow
-def test_amplitude_to_zero_gives_the_linear_period():
+def test_amplitude_to_zero_gives_the_linear_period(small_orbit):
     """T(θ0) → 2π/n of the linear eigenproblem, with T/T_lin − 1 of order θ0² (fitted slope 2)."""
     T_lin = nonlinear_blade.linear_period(UNIFORM, *CLOCK)
-    amps = (mp.mpf("0.004"), mp.mpf("0.002"))
-    rel = [nonlinear_blade.orbit(UNIFORM, *CLOCK, th, 4, 30).period / T_lin - 1 for th in amps]
+    amps = (mp.mpf("0.004"), SMALL)
+    rel = [nonlinear_blade.orbit(UNIFORM, *CLOCK, amps[0], 4, 30).period / T_lin - 1, small_orbit.period / T_lin - 1]
     slope = mp.log(rel[0] / rel[1]) / mp.log(2)
     assert abs(slope - 2) < 0.01
     assert 0 < rel[1] < 1e-5
@@ -131,16 +142,15 @@ def test_short_flexible_blade_is_a_rigid_compound_pendulum():
 
 
 @pytest.mark.slow
-def test_precision_ladder_returns_the_full_precision_root(monkeypatch):
+def test_precision_ladder_returns_the_full_precision_root(monkeypatch, small_orbit):
     """The orbit is the root of the full-precision collocation, not of its first rung: with the first stage at
     12 or at 20 digits (a different start and a different chord Jacobian) the 30-digit periods agree to 30
     digits."""
-    th = "0.002"
-    nonlinear_blade._first_stage.cache_clear()
-    T12 = nonlinear_blade.orbit(UNIFORM, *CLOCK, th, 4, 30).period
+    assert nonlinear_blade.LADDER_DPS == 12
+    T12 = small_orbit.period
     nonlinear_blade._first_stage.cache_clear()
     monkeypatch.setattr(nonlinear_blade, "LADDER_DPS", 20)
-    T20 = nonlinear_blade.orbit(UNIFORM, *CLOCK, th, 4, 30).period
+    T20 = nonlinear_blade.orbit(UNIFORM, *CLOCK, SMALL, 4, 30).period
     nonlinear_blade._first_stage.cache_clear()
     with mp.workdps(40):
         assert abs(T12 - T20) < mp.mpf("1e-30") * T12

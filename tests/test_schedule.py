@@ -141,3 +141,20 @@ def test_over_dag_reports_the_helpers_failure(monkeypatch):
     import pytest
     with pytest.raises(RuntimeError, match="ValueError: no"):
         _dag_run(monkeypatch, "2", fail_there="a")
+
+
+def test_kernels_are_formed_largest_form_first():
+    """stages.by_size: the pool's last jobs (its kernels) go largest derived form first, ties in the given order."""
+    from types import SimpleNamespace
+
+    import sympy as sp
+
+    from pendsym import stages
+    x, y = sp.symbols("x y")
+    forms = {"small": x, "large": sp.sin(x) * sp.exp(y) + x**3, "tie_a": x + y, "tie_b": x * y + 0}
+    built = {i: SimpleNamespace(derived=f) for i, f in forms.items()}
+    got = stages.by_size(["small", "tie_a", "large", "tie_b"], built)
+    assert got[0] == "large" and got[-1] == "small"
+    assert sorted(got) == sorted(forms)
+    sizes = [len(sp.srepr(forms[i])) for i in got]
+    assert sizes == sorted(sizes, reverse=True)

@@ -54,14 +54,32 @@ class KernelNumPy(NumPyPrinter):
         self.memo: dict[str, str] = {}        # a power's text → the name it is computed into
         self.pending: list[tuple[str, str]] = []   # (name, text) of the powers of the statement being printed
         self.names = itertools.count()
+        self.named: dict[sp.Basic, str] = {}  # a part of the statement being printed → the name it prints as
 
-    def statement(self, e: sp.Basic) -> tuple[str, list[tuple[str, str]]]:
+    def statement(self, e: sp.Basic, named: dict | None = None) -> tuple[str, list[tuple[str, str]]]:
         """e printed, and the powers it reads, each computed once before it: libm's pow costs ~40 ns
         an element, and the scalar path's conditions repeat u**2 dozens of times (the same value:
-        the result is the same to the bit)."""
-        self.memo, self.pending = {}, []
-        text = self.doprint(e)
+        the result is the same to the bit).  ``named`` {part of e: name}: a choice computed before
+        the statement, an array indexed by a branch's mask.  The names are put in as e is printed,
+        never into e itself: SymPy orders a sum's terms and a product's factors by their names, and
+        e with other names in it would be summed or multiplied in another order than the scalar
+        path's (a different rounding)."""
+        self.memo, self.pending, self.named = {}, [], dict(named or {})
+        try:
+            text = self.doprint(e)
+        finally:
+            self.named = {}
         return text, self.pending
+
+    def _print(self, expr, **kwargs) -> str:
+        if self.named and isinstance(expr, sp.Basic) and expr in self.named:
+            return self.named[expr]
+        return super()._print(expr, **kwargs)
+
+    def parenthesize(self, item, level, strict=False) -> str:
+        if self.named and isinstance(item, sp.Basic) and item in self.named:   # a name: no parentheses
+            return self.named[item]
+        return super().parenthesize(item, level, strict)
 
     def _print_Grouped(self, expr) -> str:
         return "(" + self._print(expr.args[0]) + ")"
@@ -136,10 +154,11 @@ def _pieces(x: sp.Basic) -> list[tuple]:
     return [(first, rest), (sp.true, sp.false)] if isinstance(x, sp.And) else [(first, sp.true), (sp.true, rest)]
 
 
-def _hoist(e: sp.Basic, level: _Level, depth: int, ids: Iterator[int], p: KernelNumPy) -> tuple[sp.Basic, list[str]]:
-    """e with each outermost choice inside it (a Piecewise or ITE, which SymPy folds into a condition;
-    an ``and``/``or``; a Select) named, and the lines that compute it piece by piece, each piece on
-    the elements where the scalar path evaluates it (so none is evaluated where it is invalid)."""
+def _hoist(e: sp.Basic, level: _Level, depth: int, ids: Iterator[int], p: KernelNumPy) -> tuple[dict, list[str]]:
+    """{each outermost choice inside e (a Piecewise or ITE, which SymPy folds into a condition; an
+    ``and``/``or``; a Select): the Symbol it is computed into}, and the lines that compute it piece
+    by piece, each piece on the elements where the scalar path evaluates it (so none is evaluated
+    where it is invalid)."""
     found = e.atoms(sp.Piecewise, sp.ITE, sp.And, sp.Or, Select)
     outer = [x for x in found if not any(y != x and y.has(x) for y in found)]
     pad, lines, named = INDENT * depth, [], {}
@@ -151,15 +170,18 @@ def _hoist(e: sp.Basic, level: _Level, depth: int, ids: Iterator[int], p: Kernel
         lines += _branches(pieces, str(t), level, depth, ids, p)
         level.arrays.add(t)
         named[x] = t
-    return (e.xreplace(named) if named else e), lines
+    return named, lines
 
 
 def _value(e: sp.Basic, level: _Level, depth: int, ids: Iterator[int], p: KernelNumPy) -> tuple[sp.Basic, str, list[str]]:
-    """(e at this level, e printed, the lines that must run first)."""
-    e, lines = _hoist(e, level, depth, ids, p)
-    e = level.value(e)
-    text, powers = p.statement(e)
-    return e, text, lines + [f"{INDENT * depth}{name} = {power}" for name, power in powers]
+    """(e at this level, e printed, the lines that must run first).  e is printed as it is (the scalar
+    path's order of its terms and factors), its choices and this level's arrays named as it prints."""
+    named, lines = _hoist(e, level, depth, ids, p)
+    here = level.value(e.xreplace(named) if named else e)
+    names = {x: p._print(t) for x, t in named.items()}
+    names.update({s: p._print(t) for s, t in level.rename.items()})
+    text, powers = p.statement(e, names)
+    return here, text, lines + [f"{INDENT * depth}{name} = {power}" for name, power in powers]
 
 
 def _statements(block: CodeBlock, level: _Level, depth: int, ids: Iterator[int], p: KernelNumPy,
