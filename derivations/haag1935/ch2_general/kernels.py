@@ -18,6 +18,8 @@ u alone, for the direct blade (293) and the inverted one (320) (first window 0 <
 Audit (session 9, ≥ 20,000 points each, worst ulp/max(1, κ), Python / C): c_Q 2.74 / 2.51 (u = 3.293), c_ii 1.74
 (u = 30.42), c_ij 1.20 / 1.17 (u ≈ 2.7), c_jj 1.42 / 1.62 (u = 2.995), c_I 2.35 / 2.48 (u = 671 / 65.6), c_J 3.38
 (u = 3.102), gravity c 1.0 (u = 4.01), inverted c 2.17 (u = 1.526); all but c_Q accept u down to 0.
+c_D (session 12, Python, before the audit): 1.55 on the emitter's 210-point sample (u = 1.5), 0.80 on the test
+points against the blade's G_2/λ; like c_Q it grows as 1/u² and keeps u ≥ 1e-6; it reaches +inf (far form).
 """
 from __future__ import annotations
 
