@@ -8,11 +8,13 @@ quadrature at K = 1 (the short blade):
   * c_Q = (−5λ + 5v_0 − w_0 + 8F_2 − F)/λ, the numerator of (242), F = 4F_3 − F_4 (110), F_n of (79);
   * c_I = I_λ/(2m'λ²): (135) with z' → −a, z − z' → a, I_λ = m'(1/λ)∫y² ds;
   * c_J = −J/λ: (136) with Q → a, J of n°37;
+  * c_D = G_2/λ: (149) at p + q = 1 with g_1(1) = G_2 (140), Q → a, G_2 = ∫(v + w)²/M ds of (79) at K = 1;
   * c_ii, c_jj = Q1(1, 0)/λ, Q1(0, 1)/λ and c_ij = (Q1(1, 1) − Q1(1, 0) − Q1(0, 1))/λ, Q1(i, j) of (248) with
     h (127) and h' (132) by quadrature;
   * the gravity pendulum's weight coefficient c = −J/λ ((292), J = (1/λ)∫(s − x) ds at K = 0), and for the
     inverted blade (M → −M, g → −g, ε = (a1 − a)/λ (312)) c = +J/λ;
-and, where e^{−u} is below 1e-40 (u ≥ 100), the memoir's printed thin-blade forms (245), (250), (252), (254).
+and, where e^{−u} is below 1e-40 (u ≥ 100), the memoir's printed thin-blade forms (245), (250), (252), (254) (for c_D,
+Γ_2 of (166) as printed at k = 0 with U_1 = 1/sh u → 0, U_2 = coth u → 1: 1/(2u)).
 κ = |u f'(u)/f(u)| by central differences of the same reference.  The kernels are the emitted ones:
 generated/python imported, generated/c compiled at -O2.
 """
@@ -29,7 +31,7 @@ from pendsym import blade
 BOUND = 4.0
 DPS = 30
 NAMES = ("eq112_c_uniform", "eq134_c_ii_uniform", "eq134_c_ij_uniform", "eq134_c_jj_uniform", "eq135_c_uniform",
-         "eq136_c_uniform", "eq136_c_gravity_uniform", "eq136_c_inverted_uniform")
+         "eq136_c_uniform", "eq136_c_gravity_uniform", "eq136_c_inverted_uniform", "eq149_c_uniform")
 HI = {"eq136_c_inverted_uniform": 3.0}       # the first window of the inverted blade, 0 < u < π; the rest: 700
 
 
@@ -59,6 +61,8 @@ def by_blade(name: str, u: float):
             return sol.inertia(1) / 2
         if name == "eq136_c_uniform":
             return -sol.weight_integral(1)
+        if name == "eq149_c_uniform":
+            return sol.G(2, 1)
         if name == "eq134_c_ii_uniform":
             return Q1(sol, 1, 0)
         if name == "eq134_c_jj_uniform":
@@ -74,7 +78,8 @@ def thin(name: str, u):
             "eq134_c_ii_uniform": -3 / (16 * u), "eq134_c_ij_uniform": -4 / (16 * u), "eq134_c_jj_uniform": -2 / (16 * u),
             "eq135_c_uniform": (mp.mpf(1) / 3 - 1 / u + 1 / u**2 + 1 / (2 * u**3)) / 2,
             "eq136_c_uniform": -(2 - 6 / u + 7 / u**2) / 8,
-            "eq136_c_gravity_uniform": -1 / (8 * u**2)}[name]      # (293) with U_1² = 1/sh²u < e^{-200}
+            "eq136_c_gravity_uniform": -1 / (8 * u**2),
+            "eq149_c_uniform": 1 / (2 * u)}[name]      # (293) with U_1² = 1/sh²u < e^{-200}
 
 
 @functools.lru_cache(maxsize=None)
@@ -158,11 +163,14 @@ def test_kernels_hold_the_contract(emitted):
 def test_limits_at_small_u(emitted):
     """The kernels that accept u down to 0 give the limit there (c_I → 1/40, c_J → −1/24, c_ii → −1/6 …, all
     from the series of the derived forms, read here from the blade at u = 1e-3 to 1e-6 relative); c_Q, which
-    grows as −1/u², keeps u ≥ 1e-6."""
+    grows as −1/u², and c_D, which grows as 1/u², keep u ≥ 1e-6."""
     for name in NAMES:
         for lang, fn in emitted[name].items():
             if name == "eq112_c_uniform":
                 assert fn(1e-6) < -1e11, lang
+                continue
+            if name == "eq149_c_uniform":
+                assert fn(1e-6) > 1e11, lang
                 continue
             near = float(by_blade(name, 1e-3))
             for u in (0.0, 5e-324, 1e-300):
@@ -171,7 +179,7 @@ def test_limits_at_small_u(emitted):
 
 # the kernels whose far form was measured to hold above u = 700 (docs/kernel-accuracy.md, "Above hi"): they accept
 # u up to +inf and give the thin blade's limit there; the gravity pendulum's two stop at their declared hi
-TO_INFINITY = NAMES[:6]
+TO_INFINITY = NAMES[:6] + ("eq149_c_uniform",)
 
 
 def test_outside_the_domain_is_a_domain_error(emitted):
@@ -181,7 +189,7 @@ def test_outside_the_domain_is_a_domain_error(emitted):
         points = [-5e-324, -1.0, -math.inf, math.nan]
         if name not in TO_INFINITY:
             points += [math.nextafter(HI.get(name, 700.0), math.inf), math.inf]
-        if name == "eq112_c_uniform":
+        if name in ("eq112_c_uniform", "eq149_c_uniform"):
             points += [0.0, math.nextafter(1e-6, 0)]
         for lang, fn in emitted[name].items():
             for u in points:
@@ -193,9 +201,9 @@ def test_outside_the_domain_is_a_domain_error(emitted):
 
 
 def test_the_thin_blade_at_infinity(emitted):
-    """Above 700 and at u = +inf the kernels give the memoir's printed thin-blade forms (245), (250), (252), (254):
-    within 4 ulp of them at u = 1e3 and 1e300, and their limits at inf (c_Q, c_ii, c_ij, c_jj → 0; c_I → 1/6 as
-    (252) says; c_J → −1/4)."""
+    """Above 700 and at u = +inf the kernels give the memoir's printed thin-blade forms (245), (250), (252), (254)
+    (and 1/(2u) of (166) for c_D): within 4 ulp of them at u = 1e3 and 1e300, and their limits at inf (c_Q, c_ii,
+    c_ij, c_jj, c_D → 0; c_I → 1/6 as (252) says; c_J → −1/4)."""
     limits = {"eq135_c_uniform": mp.mpf(1) / 6, "eq136_c_uniform": mp.mpf(-1) / 4}
     for name in TO_INFINITY:
         for lang, fn in emitted[name].items():

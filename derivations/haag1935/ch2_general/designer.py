@@ -10,7 +10,12 @@ Results' derived forms divided by their scale (nothing typed in):
 * c_Q = (a/λ)(Q'/Q − 1), from (244): ΔT/T = (θ0²/16)(1 + (λ/a)c_Q) (the isochronism coefficient);
 * c_ii, c_ij, c_jj, from (249): ΔT/T = (λ/a)(c_ii i² + c_ij ij + c_jj j²) (the clamping-error coefficients);
 * c_I = (m/m')(a/λ)² ΔT/T, from (251) (the blade's inertia);
-* c_J = (m/m')(a/λ) ΔT/T, from (253) (the blade's weight).
+* c_J = (m/m')(a/λ) ΔT/T, from (253) (the blade's weight);
+* c_D, from (149) with p + q = 1 (Le Rolland's law of n°23: the energy lost per period in proportion to the
+  blade's largest energy of deformation, Δθ0 ∝ θ0): Δθ0 = −(π/2)i_{p,q+1}(a_pq + b_pq + a'_pq + b'_pq)n^qθ0
+  (λ/a)c_D (the damping per period); the memoir does not specialise (149) to the short blade, so the step is
+  made here as chapter VI makes (251), (253): g of (140), G_n of (163), Γ_2 of (166) at K = 1 (k = K(1 − K) of
+  (165) vanishes), Q of (221) at its leading order in λ/a (:func:`damping_coefficient`).
 
 The check of each coefficient is its own: the exact modes of the pendulum a = λ/ε on the uniform blade
 u = 2 (:mod:`..ch6_short_blade.truth`: the eigenproblem of the directly solved blade, the blade's integrals
@@ -28,6 +33,8 @@ from ..common import rid
 from ..symbols import u
 
 ISOCHRONISM, CLAMPING, INERTIA, WEIGHT = rid(244, "dT"), rid(249, "dT"), rid(251, "dT"), rid(253, "dT")
+DAMPING = rid(149, "amplitude")
+DAMPING_DEPS = (DAMPING, rid(140, "g"), rid(163, "Gamma"), rid(166, "Gamma2"), rid(216, "K"), rid(221, "Q"))
 BLADE = "uniform"        # the uniform blade u = 2 of chapter VI's truth
 
 
@@ -75,6 +82,41 @@ def weight_coefficient(deps) -> sp.Expr:
     dT = deps[WEIGHT].derived
     n = _named(dT)
     return _of_u(sp.expand(n["m"] / n["m'"] * n["a"] / n["lambda"] * dT), "c_J")
+
+
+def damping_coefficient(deps) -> sp.Expr:
+    """c_D = −(2/π)(a/λ)Δθ0/(i_{p,q+1}βn^qθ0), β = a_pq + b_pq + a'_pq + b'_pq, of (149) at p + q = 1 for the short
+    uniform blade: g_1(β) = βG_2 (140), G_2 = λΓ_2 (163), Γ_2 (166) at K = 1 (k = K(1 − K) (165), K of (216) at its
+    leading order), Q of (221) at its leading order in λ/a (a); the leading term of the product taken as in (251):
+    G_2 (exactly O(λ)) at the leading K, times the leading rest."""
+    from ..ch6_short_blade.expansion import leading
+    from ..symbols import Gn, K, Q, R, k, lam
+    dth = deps[DAMPING].derived
+    n = _named(dth)
+    p, q, theta0 = n["p"], n["q"], n["theta_0"]
+    dth = dth.subs(q, 1 - p)
+    g_named = _named(deps[rid(140, "g")].derived)
+    g_1 = deps[rid(140, "g")].derived.subs({g_named["q"]: 1, g_named["x"]: 1})         # g_1(1) = G(2)
+    gs = [e for e in dth.atoms(sp.Function) if e.func.__name__ == "g"]
+    if len(gs) != 1 or gs[0].args != (1, 1) or g_1 != Gn(2):
+        raise ValueError(f"(149) at p + q = 1 does not hold g_1(1) = G_2: {gs}, {g_1}")
+    Gamma = sp.Symbol("Gamma_2")
+    n_sym = _named(deps[rid(163, "Gamma")].derived)["n"]
+    G_2 = sp.solve(sp.Eq(deps[rid(163, "Gamma")].derived.subs(n_sym, 2), Gamma), Gn(2))[0]      # λΓ_2
+    K_short = leading(deps[rid(216, "K")].derived.subs(R, 0))
+    Gamma_2 = deps[rid(166, "Gamma2")].derived.subs(k, K * (1 - K)).subs(K, K_short)
+    rest = sp.cancel(dth / gs[0])
+    if rest.has(gs[0]):
+        raise ValueError("(149) is not proportional to g")
+    rest = leading(rest.subs(Q, deps[rid(221, "Q")].derived))
+    short = rest * G_2.subs(Gamma, Gamma_2)
+    beta = n["a_pq"] + n["b_pq"] + n["a'_pq"] + n["b'_pq"]
+    i_pq = [e for e in dth.atoms(sp.Function) if e.func.__name__ == "i"]
+    if len(set(i_pq)) != 1:
+        raise ValueError(f"(149) at p + q = 1 holds several i_mn: {i_pq}")
+    a = _named(rest)["a"]
+    scale = -sp.pi / 2 * i_pq[0] * beta * n["n"] ** (1 - p) * theta0 * lam / a
+    return _of_u(sp.expand(sp.cancel(short / scale)), "c_D")
 
 
 # ---------------------------------------------------------------- the checks
@@ -129,6 +171,21 @@ def weight_check() -> checks.Order:
         return env["a"] / env["lambda"] * exact_weight(env)
     return coefficient_order(scaled, "(a/λ)(m/m')ΔT/T, (136) ΔT/T = −Jm'/(Qm), Q = K(z − z'), J = (1/2λ)∫(λ − s)"
                              "(Kφ1 + φ2)² ds by quadrature at the mode's K", mass_inputs)
+
+
+def damping_inputs(env, name, dps):
+    """G_2 = ∫(Kv + w)²/M ds (79) by quadrature on the shot blade at the mode's K."""
+    from ..ch6_short_blade.truth import shot
+    with mp.workdps(dps + 10):
+        return {"G_2": shot(name, dps).G(2, env["K"])}
+
+
+def damping_check() -> checks.Order:
+    """(a/λ)g_1(1)/Q of (149) at p + q = 1, g_1(1) = G_2 (140), at the exact modes: −(2/π)(a/λ)Δθ0/(i βn^qθ0)."""
+    def scaled(env):
+        return env["a"] / env["lambda"] * env["G_2"] / (env["K"] * (env["z"] - env["z'"]))
+    return coefficient_order(scaled, "(a/λ)G_2/Q, (149) at p + q = 1 with g_1(1) = G_2 (140), G_2 (79) by quadrature "
+                             "on the shot blade at the mode's K, Q = K(z − z') (45)", damping_inputs)
 
 
 # the clamping errors (i, j) at which the quadratic form (a/λ)ΔT/T is read: i' follows from j of (117)

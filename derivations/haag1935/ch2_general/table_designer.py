@@ -46,4 +46,12 @@ def specs() -> tuple[Spec, ...]:
              kernel=kernels.INVERTED_WEIGHT_KERNEL,
              note="Derived only: (320)'s derived form times ε m/m'. Judged against the exact inverted blade with mass "
                   "(M < 0, g < 0) at a = a1 − ελ, u = 1, by the fitted order of the residual in ε."),
+        Spec(rid(149, "c_uniform"), "c_D = −(2/π)(a/λ)Δθ0/(i_{p,q+1}βn^qθ0), the damping per period at p + q = 1, "
+             "the short uniform blade", src("n°23, 42", None), "c_D", designer.damping_coefficient,
+             deps=designer.DAMPING_DEPS, check=designer.damping_check(), kernel=kernels.DAMPING_KERNEL,
+             note="Derived only (the memoir does not specialise (149) to the short blade): (149) at p + q = 1 (Le "
+                  "Rolland's law of n°23, the energy lost per period in proportion to the blade's energy of "
+                  "deformation), β = a_pq + b_pq + a'_pq + b'_pq, with g_1 = βG_2 (140), G_2 = λΓ_2 (163), Γ_2 (166) at "
+                  "K = 1, Q → a (221), divided by its scale. Judged at the exact modes (chapter VI's truth) by the "
+                  "fitted order of the residual in λ/a on the uniform blade u = 2."),
     )
