@@ -62,20 +62,12 @@ def original_ids() -> list[str]:
 
 
 def subset_order(ids: list[str], specs, order) -> tuple[str, ...]:
-    """ids with their dependencies and the Results their chained checks feed (a chain step is assessed
-    with them), closed under both, in the derive's order."""
+    """ids with their dependencies (:func:`pendsym.registry.closure`) and the Results their chained checks feed
+    (a chain step is assessed with them), closed under both, in the derive's order."""
     from .checks import Chain
-    need: set[str] = set()
-    todo = list(ids)
-    while todo:
-        rid = todo.pop()
-        if rid in need:
-            continue
-        need.add(rid)
-        spec = specs[rid]
-        todo.extend(spec.deps)
-        if isinstance(spec.check, Chain):
-            todo.extend(spec.check.downstream)
+    need = set(registry.closure(ids, specs))
+    while more := {d for i in need if isinstance(specs[i].check, Chain) for d in specs[i].check.downstream} - need:
+        need |= set(registry.closure(more, specs))
     return tuple(i for i in order if i in need)
 
 
