@@ -53,10 +53,6 @@ def test_the_memoir_registers_one_figure_per_chapter_each_after_a_result_of_it(p
     assert all(f.place in ids for f in MEMOIR.figures)
 
 
-def test_the_figures_cost_little(plots):
-    assert sum(p.seconds for _, p in plots[0].values()) < 40
-
-
 # ----------------------------------------------------------------- VIII: the stability windows
 def sign_changes(points):
     ys = [(x, y) for x, y in points if y is not None]

@@ -28,7 +28,7 @@ def test_attack_is_refused_in_one_line_at_once(text):
     t0 = time.perf_counter()
     with pytest.raises(FormulaError) as exc:
         parse(text, {"x": X})
-    assert time.perf_counter() - t0 < 1.0
+    assert time.perf_counter() - t0 < 10.0       # a guard against a hang (9**9**9 evaluated), not a speed goal
     assert "\n" not in str(exc.value) and len(str(exc.value)) < 400
 
 
