@@ -15,8 +15,9 @@ Everything is written in the blade's axes, where the clamp stays φ(0) = 0, so t
 
 :func:`equilibrium` solves the statics exactly (X = cos i, Y = −sin i, and the clamping couple c0 that
 makes the blade's end couple N equal the pendulum's moment), by mpmath's ``findroot`` from a start on the
-straight blade's branch found by multiple shooting (a stiff blade, u = ∫ M^{−1/2} ds ≳ 5, has other equilibria,
-looped elastic lines, that Newton from c0 = 0 can reach; a looped end is refused).
+straight blade's branch found by multiple shooting (a blade of large u = ∫ M^{−1/2} ds has other equilibria,
+looped elastic lines, that Newton from c0 = 0 can reach: it did at u ≈ 13; a looped end is refused, and so is a
+principal eigenvalue more than 1 % off the untilted n²).  Tested from u = 0.5 to u = 20.
 :func:`tilted` linearises the exact equations about that equilibrium in the loads
 (X, Y, c0) — the positions follow by the elastica's variational equations — and solves the 3 × 3
 generalised eigenproblem B q = Ω A q (mpmath ``eig``); the principal mode is the eigenvalue nearest the
@@ -63,11 +64,12 @@ def equilibrium(blade: linear_blade.Blade, a, g, i, i_prime, dps: int = 30) -> E
 
     The pendulum at rest: X = cos i, Y = −sin i (the force on G balances its weight), and c0 solves
     N(c0) = a(Y cos(θ(c0) + i') − X sin(θ(c0) + i')) (the moment about G).  A precision ladder: Newton from
-    the multiple shooting's c0 (:func:`_multiple_shooting`: the straight blade's branch, where the end angle
-    depends on c0 through e^u) at ``nonlinear_blade.LADDER_DPS`` digits with the elastica's variation in c0 as derivative, then
-    the chord method at ``dps`` digits with that derivative (the elastica without its variations), and the
-    end's state with its Jacobian at the root found; the moment residual is tested there, at ``dps`` digits,
-    and the end angle must be on the straight blade's branch (:func:`_check_branch`; else NoConvergence).
+    the multiple shooting's c0 (:func:`_multiple_shooting`: on the straight blade's branch, where the end angle
+    depends on c0 through e^u) at ``nonlinear_blade.LADDER_DPS`` digits with the elastica's variation in c0 as
+    derivative, then the chord method at ``dps`` digits with that derivative (the elastica without its
+    variations), and the end's state with its Jacobian at the root found; the moment residual is tested there,
+    at ``dps`` digits, and the end angle must be on the straight blade's branch (:func:`_check_branch`; else
+    NoConvergence).
     """
     low = min(dps, nonlinear_blade.LADDER_DPS)
     c0, slope = _newton(blade, a, i, i_prime, low, _multiple_shooting(blade, a, i, i_prime, low))
@@ -111,16 +113,18 @@ def _shooting_segments(blade: linear_blade.Blade, nepers=1):
 
 def _segment(X, Y, seg, phi, mu, tol):
     """The elastica φ' = μ/M, μ' = X sin φ − Y cos φ across one segment from (φ, μ), with its 2×2 variation
-    in (φ, μ): ((φ, μ) at the end, ∂(φ, μ)_end/∂(φ, μ)_start)."""
+    in (φ, μ): ((φ, μ) at the end, ∂(φ, μ)_end/∂(φ, μ)_start).  Written with C = cos φ, S = sin φ carried
+    (C' = −Sφ', S' = Cφ') as :func:`pendsym.nonlinear_blade.end_state` does: no sine in the Taylor solver."""
     a, b, Mf = seg
 
     def rhs(s, u):
         inv = 1 / Mf(s)
-        k = X * mp.cos(u[0]) + Y * mp.sin(u[0])
-        return [u[1] * inv, X * mp.sin(u[0]) - Y * mp.cos(u[0]),
-                u[3] * inv, k * u[2], u[5] * inv, k * u[4]]
-    end = mp.odefun(rhs, a, [phi, mu, mp.mpf(1), mp.mpf(0), mp.mpf(0), mp.mpf(1)], tol=tol)(b)
-    return (end[0], end[1]), ((end[2], end[4]), (end[3], end[5]))
+        rate, cs, sn = u[1] * inv, u[2], u[3]
+        k = X * cs + Y * sn
+        return [rate, X * sn - Y * cs, -sn * rate, cs * rate, u[5] * inv, k * u[4], u[7] * inv, k * u[6]]
+    start = [phi, mu, mp.cos(phi), mp.sin(phi), mp.mpf(1), mp.mpf(0), mp.mpf(0), mp.mpf(1)]
+    end = mp.odefun(rhs, a, start, tol=tol)(b)
+    return (end[0], end[1]), ((end[4], end[6]), (end[5], end[7]))
 
 
 def _multiple_shooting(blade: linear_blade.Blade, a, i, i_prime, dps: int):
@@ -153,7 +157,7 @@ def _multiple_shooting(blade: linear_blade.Blade, a, i, i_prime, dps: int):
                 if k < K - 1:                 # continuity with the next cut's unknowns
                     rows = (2 * k, 2 * k + 1)
                     F[rows[0]], F[rows[1]] = pe - z[2 * k + 1], (me - z[2 * k + 2]) / scale[k]
-                    for r, val in enumerate((pe, me)):
+                    for r in range(2):
                         for c, col in enumerate(cols):
                             if col is not None:
                                 J[rows[r], col] += var[r][c] / (scale[k] if r else 1)
