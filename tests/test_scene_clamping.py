@@ -20,9 +20,11 @@ REGULATOR = "scenes/regulator_spring_blade.toml"
 TILT = {"i": 0.02, "i_prime": 0.01}          # rad: about 1.1° and 0.6°, a clockmaker's visible misalignment
 
 
-# (λ, a): the regulator's spring (u = 3.46, λ/a = 0.0081), and a shorter span under a shorter pendulum (u = 2.5,
-# λ/a = 0.0083, R²/a² = 0.013), a point the error's coefficients were not measured at
-GEOMETRIES = {"regulator": None, "short span": (0.00578, 0.7)}
+# (λ, a): the regulator's spring (u = 3.46, λ/a = 0.0081), a shorter span under a shorter pendulum (u = 2.5,
+# λ/a = 0.0083, R²/a² = 0.013), a point the error's coefficients were not measured at, and a longer span under the
+# regulator's pendulum (u = 13, λ/a = 0.031, sh u ≈ 2e5: the exact solver once found a looped elastica there,
+# tests/test_nonlinear_tilt.py), another
+GEOMETRIES = {"regulator": None, "short span": (0.00578, 0.7), "long span u=13": (0.03, 0.982)}
 
 
 def clamped(root, tilt=TILT, tolerance=1e-10, geometry=None):
