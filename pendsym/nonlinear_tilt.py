@@ -68,7 +68,7 @@ def equilibrium(blade: linear_blade.Blade, a, g, i, i_prime, dps: int = 30) -> E
     depends on c0 through e^u) at ``nonlinear_blade.LADDER_DPS`` digits with the elastica's variation in c0 as
     derivative, then the chord method at ``dps`` digits with that derivative (the elastica without its
     variations), and the end's state with its Jacobian at the root found; the moment residual is tested there,
-    at ``dps`` digits, and the end angle must be on the straight blade's branch (:func:`_check_branch`; else
+    at ``dps`` digits, and the end angle must be on the straight blade's branch (:func:`check_branch`; else
     NoConvergence).
     """
     low = min(dps, nonlinear_blade.LADDER_DPS)
@@ -81,7 +81,7 @@ def equilibrium(blade: linear_blade.Blade, a, g, i, i_prime, dps: int = 30) -> E
         X, Y = mp.cos(i), -mp.sin(i)
         end = nonlinear_blade.end_state(blade, X, Y, c0, wdps, variations=True)
         mismatch = _moment_mismatch(end, X, Y, a, i_prime)
-        _check_branch(end.theta, i, i_prime)
+        check_branch(end.theta, i, i_prime)
         if not abs(mismatch) < mp.mpf(10) ** (-(dps + 3)) * (1 + abs(a)):
             raise nonlinear_blade.NoConvergence(f"tilted equilibrium: moment residual {mp.nstr(mismatch, 5)}")
         return Equilibrium(X, Y, c0, end.alpha, end.beta, end.theta, end.N, end.jacobian)
@@ -90,7 +90,7 @@ def equilibrium(blade: linear_blade.Blade, a, g, i, i_prime, dps: int = 30) -> E
 BRANCH = 1            # rad: |φ| along the blade above this is another equilibrium (a looped elastica)
 
 
-def _check_branch(theta, i, i_prime):
+def check_branch(theta, i, i_prime):
     """Refuse an equilibrium off the branch of the straight blade: the tilted blade's end stays within about
     |i| + |i'| of the clamp's tangent, a looped elastica (θ shifted by 2πk) is another equilibrium."""
     if not abs(theta) < BRANCH:

@@ -136,5 +136,5 @@ def test_the_branch_and_the_second_order_hold_from_u_half_to_u_20(length, u_rang
 def test_a_looped_elastica_is_refused():
     """The branch guard: an end angle off by 2π (a looped elastica) is refused with a clear error."""
     with pytest.raises(nonlinear_blade.NoConvergence, match="looped elastica"):
-        nonlinear_tilt._check_branch(-2 * mp.pi - mp.mpf("0.03"), mp.mpf("0.02"), mp.mpf("0.01"))
-    nonlinear_tilt._check_branch(mp.mpf("-0.03"), mp.mpf("0.02"), mp.mpf("0.01"))
+        nonlinear_tilt.check_branch(-2 * mp.pi - mp.mpf("0.03"), mp.mpf("0.02"), mp.mpf("0.01"))
+    nonlinear_tilt.check_branch(mp.mpf("-0.03"), mp.mpf("0.02"), mp.mpf("0.01"))
