@@ -45,7 +45,8 @@ MP_DIFF = {"j0": lambda x: mp.besselj(0, x, 1), "j1": lambda x: mp.besselj(1, x,
 @needs_libm
 @pytest.mark.parametrize("name", ["j0", "j1", "y0", "y1"])
 def test_libm_bessel_within_4_ulp_at_large_arguments(name):
-    """The forms call j0 … y1 at x_0 ~ 2u/q, up to ~1e9: at large x off the zeros the C library must be within
+    """The plain forms of the diagnosis (kernel_forms; the kernels call no Bessel function since session 13) call
+    j0 … y1 at x_0 ~ 2u/q, up to ~1e9: at large x off the zeros the C library must be within
     4 ulp of the value at the exact double (glibc 2.36 measured ≤ 3.44 on 1,200 points up to 1e9)."""
     xs = [30.5, 1234.5678, 98765.4321, 2.0e6 + 0.3, 3.3758e8, 8.36e8 + 0.123]
     with mp.workdps(40):
