@@ -21,7 +21,7 @@ from pendsym.emit.kernels import supplied
 
 from test_haag1935_ch9_kernels import LIBM, needs_libm          # tests/ is on sys.path (pytest, rootdir-less)
 
-ARGS = (ch9_kernels.U_ARG, ch9_kernels.Q_ARG)
+ARGS = (ch9_kernels.U_ARG, g2k.Q_ARG)
 
 
 # ---------------------------------------------------------------- the derivation (steps 1–3)
@@ -59,10 +59,18 @@ def test_integral_form_is_the_derived_346():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("uq", [(3.141592653589793, 2.5), (0.05, 2.5), (1.0, 1e-8), (2.0, 0.3)])
+@pytest.mark.parametrize("uq", [(3.141592653589793, 2.5), (0.05, 2.5), (1.0, 1e-8), (2.0, 0.3), (0.05, 5.0),
+                                (3.141592653589793, 5.0)])
 def test_quadrature_rule_error_is_far_below_an_ulp(uq):
-    """The 12-point rule on I_01, I_11 within 1e-20 relative of mpmath quad (measured ≤ 5e-24 at q = 2.5)."""
-    assert g2k.quadrature_residual(*uq) < 1e-20
+    """The 12-point rule on I_01, I_11 within 1e-19 relative of mpmath quad (measured ≤ 5e-24 at q = 2.5, ≤ 6e-20 at
+    q = 5, the domain's end)."""
+    assert g2k.quadrature_residual(*uq) < 1e-19
+
+
+def test_quadrature_rule_fails_where_the_domain_ends():
+    """Beyond the declared end the 12-point rule loses digits (2e-13 relative measured at q = 20): the end is the
+    rule's, not the cross products'."""
+    assert g2k.Q_ARG.hi == 5.0 and g2k.quadrature_residual(1.5, 20.0) > 1e-15
 
 
 # ---------------------------------------------------------------- the form as it would be emitted
@@ -80,12 +88,14 @@ def _emitted(tmp_path):
     return out
 
 
-# q = 1e-8 (x_0 up to 6e8), the Hankel/Taylor switch x_0 = 25 (q = 2u/25) with the doubles beside it, q = 2.5, u → π
+# q = 1e-8 (x_0 up to 6e8), the Hankel/Taylor switch x_0 = 25 (q = 2u/25) with the doubles beside it, q = 2.5 and
+# the Taylor steps beyond it to the domain's end q = 5, u → π
 # (κ grows as N_10 → 0), u = 0.05, and the audit's worst points
 POINTS = [(1.7, 1e-8), (0.05, 1e-8), (3.141592653589793, 1e-8), (1.0, 0.08), (1.0, 0.07999999999999999),
           (1.0, 0.08000000000000002), (0.36, 0.052), (2.157, 0.5528), (1.8657914762268288, 2.4), (0.05, 2.5),
           (3.141592653589793, 2.5), (3.14, 0.3), (0.3, 2.5), (1.81433, 0.128159), (1.5714, 1.83e-6),
-          (1.6121317476816759, 0.0008839050751482987)]
+          (1.6121317476816759, 0.0008839050751482987), (1.0, 2.5000000000000004), (0.05, 5.0), (3.141592653589793, 5.0),
+          (1.9, 3.7)]
 
 
 @pytest.mark.slow
@@ -126,11 +136,12 @@ def test_kernel_outside_the_domain(tmp_path):
 
 
 def test_the_result_declares_the_kernel():
-    """eq346.G2_u_q carries the supplied form on the box of the (343) kernels."""
+    """eq346.G2_u_q carries the supplied form on u of the (343) kernels, q to 5 (the rule's end, not theirs)."""
     from derivations.haag1935.ch9_holes import rhombus_table_kernels
     spec = next(s for s in rhombus_table_kernels.specs() if s.id == "haag1935.eq346.G2_u_q")
     assert isinstance(spec.kernel, supplied.SuppliedKernelSpec) and spec.kernel.form == g2k.supplied()
-    assert spec.kernel.args == ARGS and (ARGS[1].lo, ARGS[1].hi) == (1e-8, 2.5)
+    assert spec.kernel.args == ARGS and (ARGS[1].lo, ARGS[1].hi) == (1e-8, 5.0)
+    assert ARGS[0] == ch9_kernels.U_ARG and ch9_kernels.Q_ARG.hi == 1e3
 
 
 @needs_libm

@@ -45,7 +45,8 @@ MP_DIFF = {"j0": lambda x: mp.besselj(0, x, 1), "j1": lambda x: mp.besselj(1, x,
 @needs_libm
 @pytest.mark.parametrize("name", ["j0", "j1", "y0", "y1"])
 def test_libm_bessel_within_4_ulp_at_large_arguments(name):
-    """The forms call j0 … y1 at x_0 ~ 2u/q, up to ~1e9: at large x off the zeros the C library must be within
+    """The plain forms of the diagnosis (kernel_forms; the kernels call no Bessel function since session 13) call
+    j0 … y1 at x_0 ~ 2u/q, up to ~1e9: at large x off the zeros the C library must be within
     4 ulp of the value at the exact double (glibc 2.36 measured ≤ 3.44 on 1,200 points up to 1e9)."""
     xs = [30.5, 1234.5678, 98765.4321, 2.0e6 + 0.3, 3.3758e8, 8.36e8 + 0.123]
     with mp.workdps(40):
@@ -263,16 +264,31 @@ def _cross_exact(a, b, x0, l0, h, lh=0.0):
         return c * mp.pi * mp.sqrt(X0 * X1) / 2
 
 
-# (u, q) in each route of bessel_cross: Hankel (x_0 ≥ 25), Taylor (h ≤ x_0/2), and the switches between them
+# (u, q) in each route of bessel_cross: Hankel (x_0 ≥ 25), one Taylor step (h ≤ x_0/2), Taylor steps (h > x_0/2:
+# two at q just above 2.5, 8 at q = 1000, 17 at q = 1e6, beyond the kernels' domain), and the switches between them
 CROSS_POINTS = [(1.7, 1e-8), (0.05, 1e-8), (3.1, 3e-4), (2.29, 3.45e-6), (1.0, 0.08), (1.0, 0.07999999999999999),
-                (1.0, 0.08000000000000002), (0.3, 0.5), (2.69, 2.438), (3.14, 2.5), (1.3, 1.57)]
+                (1.0, 0.08000000000000002), (0.3, 0.5), (2.69, 2.438), (3.14, 2.5), (1.3, 1.57),
+                (1.0, 2.5000000000000004), (0.05, 5.0), (3.14, 40.0), (2.2, 333.0), (0.05, 1e3), (3.141592653589793, 1e3),
+                (1.9, 1e6)]
+
+
+def test_bessel_cross_calls_no_bessel_function():
+    """Since session 13 bessel_cross continues its Taylor series in steps where it called the library's j0 … y1
+    (C) and scipy's jv, yv (Python): its text names neither, and no C file needs _XOPEN_SOURCE for it."""
+    for lang in ("c", "py"):
+        text = "\n".join(supplied.helper_definitions(HELPER_CALLS, lang))
+        assert "pendsym_bessel_taylor" in text and "pendsym_bessel_step" in text
+        for name in ("j0(", "j1(", "y0(", "y1(", "jv", "yv", "scipy"):
+            assert name not in text, (lang, name)
+    assert supplied.c_preamble(HELPER_CALLS) == ""
 
 
 @pytest.mark.slow
 def test_bessel_cross_holds_an_ulp_by_hankel_and_taylor(helpers):
     """The cross products Y_a(x_0)J_b(x_1) − J_a(x_0)Y_b(x_1) (times π√(x_0x_1)/2) within 1.25 ulp of mpmath at
-    50 digits (measured ≤ 0.97 by Hankel's expansion, ≤ 0.57 by the double-double Taylor series), at x_0 = 2u/q
-    up to 3.4e8 and at the switch x_0 = 25 (q = 0.08 at u = 1) with the doubles beside it."""
+    50 digits (measured ≤ 0.97 by Hankel's expansion, ≤ 0.57 by the double-double Taylor series in one step, ≤ 0.5
+    in steps up to q = 1e8), at x_0 = 2u/q up to 3.4e8, at the switch x_0 = 25 (q = 0.08 at u = 1) with the doubles
+    beside it, and down to x_0 = 1e-4 (q = 1000) and 3.8e-6 (q = 1e6) where no Bessel function is called."""
     for u_, q_ in CROSS_POINTS:
         x0 = 2 * u_ / q_
         for lang, (ql, bc, rq) in helpers.items():
@@ -311,11 +327,13 @@ def _emitted_kernels(tmp_path):
 
 
 # q = 1e-8 (x_0 up to 6e8), the Hankel/Taylor switch x_0 = 25 (q = 2u/25) with the doubles beside it, the end of
-# the Taylor route h = x_0/2 (q = 2.5), the window's end u → π, and the derive sample's worst points
+# the one-step Taylor route h = x_0/2 (q = 2.5) and the steps beyond it to the domain's end q = 1000, the window's
+# end u → π, and the derive sample's worst points
 KERNEL_POINTS = [(1.7, 1e-8), (0.05, 1e-8), (3.141592653589793, 1e-8), (2.2917513082343093, 3.4497835323522242e-06),
                  (1.0, 0.08), (1.0, 0.07999999999999999), (1.0, 0.08000000000000002), (0.36, 0.052), (2.157, 0.5528),
                  (0.6961509328167482, 0.1171351571403665), (1.8657914762268288, 2.4), (2.8475989090847778, 2.5),
-                 (0.05, 2.5), (3.141592653589793, 2.5),
+                 (0.05, 2.5), (3.141592653589793, 2.5), (1.0, 2.5000000000000004), (0.05, 7.3), (2.9, 61.0),
+                 (0.05, 1e3), (3.141592653589793, 1e3), (1.2, 470.0),
                  (1.90796, 2.11379e-05), (2.07282, 1.09919e-07), (2.0369, 2.44134e-05)]   # the audit's worst (v0, w0, wλ)
 
 

@@ -2,7 +2,7 @@
 
 The printed (346), the derived (346) and the truth (G_2 = ∫ w²/|M| ds on the shot blade, :mod:`.rhombus_truth`, no
 Bessel function) at ω, λ fixed, k from 10⁻⁸ to 10³, on log axes; and the emitted kernel of G_2/λ in u = ωλ, q = kλ
-(Result eq346.G2_u_q, :mod:`.rhombus_g2_kernel`) over its domain q ≤ 2.5 (no points beyond: it raises there).
+(Result eq346.G2_u_q, :mod:`.rhombus_g2_kernel`) over its domain q ≤ 5 (no points beyond: it raises there).
 λ = 1, so that G_2/λ is G_2.
 """
 from __future__ import annotations
@@ -57,9 +57,10 @@ G2_RHOMBUS = Figure(
              "With the arguments as double-doubles, v₀, w₀, w_λ hold to a few ulp down to k = 1e-8, but (346) still "
              "cancels. A stable form of G₂/λ in u = ωλ, q = kλ is derived (a sum of positive terms: quadratures of "
              "squared cross products of Bessel functions over the gap x₁ − x₀, every sum and product after the cross "
-             "products compensated) and emitted as a kernel within 4 ulp × max(1, κ) for q = kλ from 1e-8 to 2.5; "
-             "the stable-kernel curve ends at the last k below 2.5, its domain's end, where its cross products stop being "
-             "shown accurate (a gap of the kernel, not of the blade: see below). "
+             "products compensated) and emitted as a kernel within 4 ulp × max(1, κ) for q = kλ from 1e-8 to 5; "
+             "the stable-kernel curve ends at the last k below 5, its domain's end, where its 12-point quadrature "
+             "stops being shown accurate (its cross products hold further, the kernels of (343) are declared to "
+             "q = 1000: a gap of the kernel, not of the blade: see below). "
              "The blade stays stable (β₁ < 0, (304)) for every k: "
              "at ω, λ fixed the hole only stiffens it away from its middle, so there is no largest stable k; the "
              "axis stops at k = 1000 (M at the ends 501 M₀)."),

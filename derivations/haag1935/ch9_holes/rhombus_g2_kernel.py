@@ -17,9 +17,10 @@ same G_2 is derived, by code, as a sum of positive terms:
 3. :func:`scaled_in_cross`: over λ in u = ωλ, q = kλ, with h = u/(1 + √(1 + q/2)) (:func:`.kernel_forms.end_gap`):
    G_2/λ = h√(2q + 4)/(4u)·(I_01/N_00² + I_11/N_10²): no subtraction anywhere;
 4. :func:`supplied`: I_ab by Gauss–Legendre quadrature in t (:data:`NODES` nodes, computed here by mpmath): the
-   integrand is analytic in x except at x = 0, which lies at t = −x_0/h ≤ −2 for q ≤ 2.5, so that the rule's error is
-   below (5 + √24)^(−2n) ≈ 1e-23 for n = 12; each N_ab by ``bessel_cross`` (Hankel's expansion, the Taylor series
-   in the gap, or the library's Bessel functions), from x_0 = 2u/q as a double-double and the gap th.
+   integrand is analytic in x except at x = 0, which lies at t = −x_0/h ≤ −2 for q ≤ 2.5 (≤ −1.148 for q ≤ 5), so
+   that the rule's error is below (5 + √24)^(−2n) ≈ 1e-23 for n = 12 (6e-20 at q = 5, measured); each N_ab by
+   ``bessel_cross`` (Hankel's expansion or the Taylor series in the gap, in one or two steps: no Bessel function),
+   from x_0 = 2u/q as a double-double and the gap th.
 
 5. the sums and the assembly compensated (:mod:`.compensated`): the squares of the cross products, the weights
    and nodes as double-doubles, the two sums of twelve terms by two-sum, the quotients by N_a0² and the factor
@@ -33,19 +34,16 @@ roundings of the sums and the assembly; with it (session 12), make audit's machi
 3.47 ulp × max(1, κ) at worst, Python and C alike, at u = 1.58794, q = 0.0296435 (κ = 0.97; 4.57 ulp), no point
 over 4; C about 37 µs a call (26 cross products, most by the double-double Taylor series; on a loaded machine).
 
-**Domain**: u ∈ [0.05, π], q ∈ [1e-8, 2.5], the box of the other rhombus kernels (:mod:`.kernels`).  q = 2.5 is
-where the gap h reaches x_0/2: up to it the singular point x = 0 of the integrand lies at t = −x_0/h ≤ −2, so the
-12-node rule errs below 1e-23, and every cross product is Hankel's expansion or the double-double Taylor series.
-Above it bessel_cross calls the library's Bessel
-functions, and the kernel with its box widened measured (session 12, 45 points of q ∈ [2.5, 5] against the derived
-(346) at 70 digits) up to 10.8 (Python, scipy's jv, yv) and 6.5 (C, glibc's j0 … y1) scaled ulp: the cross
-products near the zeros of the Bessel functions, not the rule (:func:`quadrature_residual`: 5e-20 relative at
-q = 5, but 2e-13 at q = 20, where x = 0 comes to t ≈ −0.43).  The blade itself stays stable at every q for u ≤ π,
-so q > 2.5 is a gap of the kernel, not of the physics: closing it needs cross products within an ulp where
-h > x_0/2 (the Taylor series about x_0 carried further, in steps, or the ODE of the cross product integrated in
-double-double), and from q ≈ 10 more nodes (about 16 at q = 20, 30 at q = 200, by the rate
-(|z| + √(z² − 1))^(−2n), z = −1 − 2x_0/h) or a rule that takes the logarithm and pole of N_ab² at x = 0 into its
-weights; for q → ∞ a form in the small argument x_0 = 2u/q.
+**Domain**: u ∈ [0.05, π], q ∈ [1e-8, 5] (its own :data:`Q_ARG`; the kernels of (343) go to q = 1000).  Up to
+q = 2.5 (the gap h = x_0/2) the singular point x = 0 of the integrand lies at t = −x_0/h ≤ −2 and the 12-node rule
+errs below 1e-23; up to q = 5 at t ≤ −1.148, and :func:`quadrature_residual` measured 5.9e-20 (u = 0.05), 5.4e-20
+(u = 1.5), 3.5e-20 (u = π) at q = 5 (3.4e-24 at q = 2.5).  Until session 12 every cross product above q = 2.5 came
+from the library's Bessel functions (45 points of q ∈ [2.5, 5]: up to 10.8 scaled ulp, Python, 6.5, C); since
+session 13 ``bessel_cross`` continues its Taylor series in steps there (:mod:`.kernels`, "Domain"), within an ulp
+at every q, so q ∈ [2.5, 5] is declared.  Beyond q = 5 the blade stays stable and the cross products hold, but the
+rule loses digits (2e-13 relative at q = 20, where x = 0 comes to t ≈ −0.43): more nodes (about 16 at q = 20, 30 at
+q = 200, by the rate (|z| + √(z² − 1))^(−2n), z = −1 − 2x_0/h), or composite rules on the Taylor steps'
+intervals [x_k, 1.5x_k] (each with x = 0 at t = −2), would carry the kernel further; not done.
 
 :func:`integral_residual` checks step 1–3 against the derived (346) by mpmath (the integrals by ``mpmath.quad`` at 50
 digits) and :func:`quadrature_residual` step 4; both are run by tests/test_haag1935_ch9_g2_kernel.py, not when the
@@ -59,6 +57,7 @@ import mpmath as mp
 import sympy as sp
 
 from pendsym.emit.kernels.supplied import BesselCross, QuotientLow, RootQuotient, SuppliedKernelSpec
+from pendsym.result import KernelArg
 
 from ..symbols import lam, omega, u
 from . import compensated as cm, kernel_forms, kernels, rhombus_derivation as derivation
@@ -70,6 +69,7 @@ I01, I11 = sp.symbols("I_01 I_11", positive=True)                   # ∫_0^1 N_
 h = sp.Symbol("h", positive=True)                                   # x_1 − x_0
 v_mid, v_mid_slope = sp.symbols("v_m v'_m", real=True)              # v(x_0), dv/dx(x_0)
 NODES = 12                                                          # Gauss–Legendre nodes on [0, 1]
+Q_ARG = KernelArg("q", 1e-8, 5.0, log=True)     # the 12-node rule within 5e-20 up to q = 5 (see Domain)
 
 # today's J_n, Y_n at x_0 (a), at x (c) and at x_1 (b), as symbols
 j0a, j1a, y0a, y1a = sp.symbols("j0a j1a y0a y1a", real=True)
@@ -278,16 +278,16 @@ NOTES = ("G_2/λ = h√(2q + 4)/(4u)·(I_01/N_00² + I_11/N_10²), h = x_1 − x
          "Every operation after the cross products is compensated (two-sum, exact residuals by quotient_low): the "
          "squares, the weighted sums, the quotients and the factor h√(2q + 4)/(4u) add well under an ulp to the cross "
          "products' own error.",
-         "Domain: u ∈ [0.05, π] (the inverted blade exists up to u = π as q → 0, further as q grows); q ∈ [1e-8, 2.5]: "
-         "up to q = 2.5 the integrand's singular point x = 0 lies at t ≤ −2, the 12-point rule errs below 1e-23 and "
-         "every cross product is Hankel's expansion or the Taylor series in the gap. The blade is stable beyond, but "
-         "there the cross products come from the Bessel functions themselves (up to 10.8 scaled ulp measured in "
-         "q ∈ [2.5, 5]) and from q ≈ 10 the rule loses digits (2e-13 relative at q = 20): q > 2.5 is not declared.")
+         "Domain: u ∈ [0.05, π] (the inverted blade exists up to u = π as q → 0, further as q grows); q ∈ [1e-8, 5]: "
+         "up to q = 5 the integrand's singular point x = 0 lies at t ≤ −1.14 and the 12-point rule errs below 6e-20 "
+         "(mpmath); every cross product is Hankel's expansion or the Taylor series in the gap (one or two steps). The "
+         "blade is stable beyond, and the cross products hold there too (the kernels of (343) are declared to q = 1000), "
+         "but the 12-point rule loses digits as x = 0 nears t = 0 (2e-13 relative at q = 20): q > 5 is not declared.")
 
 
 def kernel() -> SuppliedKernelSpec:
-    """The KernelSpec of G_2/λ (u, q on the box of :mod:`.kernels`), declared on eq346.G2_u_q."""
-    return SuppliedKernelSpec(args=(kernels.U_ARG, kernels.Q_ARG), form=supplied(),
+    """The KernelSpec of G_2/λ (u on the box of :mod:`.kernels`, q ∈ [1e-8, 5]: :data:`Q_ARG`), declared on eq346.G2_u_q."""
+    return SuppliedKernelSpec(args=(kernels.U_ARG, Q_ARG), form=supplied(),
                               rule="supplied: positive quadrature of cross products by bessel_cross", notes=NOTES,
                               doc="G_2/λ of the inverted rhombus blade (346), G_2 = ∫ w²/M ds, in u = ωλ and q = kλ "
                                   "(M = M_0(1 + k|s|), M at the ends M_0(1 + q/2)).")
@@ -301,5 +301,5 @@ def double_value(u_: float, q_: float) -> float:
 @functools.lru_cache(maxsize=None)
 def _emitted():
     from pendsym.emit.kernels import emitted_py
-    return emitted_py("G2_u_q", (kernels.U_ARG, kernels.Q_ARG), supplied())
+    return emitted_py("G2_u_q", (kernels.U_ARG, Q_ARG), supplied())
 

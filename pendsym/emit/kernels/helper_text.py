@@ -1,7 +1,7 @@
 """The text of the helpers that supplied kernel forms call (:mod:`.supplied`), printed once per file: double-double
 arithmetic, the low part of a quotient, u/(1 + √(1 + t)) as a double-double, and the cross products of Bessel
-functions of orders 0 and 1 (Hankel's expansion for large arguments, a Taylor series in the gap, or the library's
-j0 … y1), in C and in Python."""
+functions of orders 0 and 1 (Hankel's expansion for large arguments, else the Taylor series of Bessel's equation in
+the gap, in steps of at most half the centre), in C and in Python."""
 from __future__ import annotations
 
 from fractions import Fraction
@@ -142,67 +142,92 @@ static double pendsym_hankel_pq(int n, double x, double *q)
     return ({_horner(p1[1:], "t")})*t;
 }}
 
-/* c(x0 + h)/W(x0), W = 2/(πx): c = Y_a(x0)J_b(x) − J_a(x0)Y_b(x) solves Bessel's equation of order b in x, from
- * c(x0)/W = 0 or ∓1 and c'(x0)/W; its Taylor series in h by the recurrence of the coefficients about x0, in
- * double-double (terms t_m = f_m h^m), times √(x1/x0) (double-double), rounded once. */
-static double pendsym_bessel_taylor(int a, int b, double x0, double h, double lh)
+/* One Taylor step of c(x) = Y_a(x0)J_b(x) − J_a(x0)Y_b(x) (a solution of Bessel's equation of order b) over the
+ * gap h + lh from the centre xc + xl (double-double), c(xc)/W = f, h·c'(xc)/W = g (double-doubles, W = 2/(πx0)):
+ * the series by the recurrence of its coefficients about xc (terms t_m = f_m h^m; h <= xc/2, so that they fall
+ * as 2^-m at least) until two terms fall below tol (relative), in double-double; c(xc + h + lh)/W to *sh, *sl and
+ * c'(xc + h + lh)/W to *dh, *dl (the low part lh to first order). */
+static void pendsym_bessel_step(int b, double xc, double xl, double fh, double fl, double gh, double gl, double h,
+                                double lh, double tol, double *rh, double *rl, double *dh, double *dl)
 {{
     double th[4] = {{0.0, 0.0, 0.0, 0.0}}, tl[4] = {{0.0, 0.0, 0.0, 0.0}};   /* t_(m-2), t_(m-1), t_m, t_(m+1) */
-    double h2, h2l, h3, h3l, h4, h4l, x2, x2l, sh, sl, nh, nl, ph, pl, dh, dl, fh, fl, slope;
+    double h2, h2l, h3, h3l, h4, h4l, x2, x2l, sh, sl, nh, nl, ph, pl, qh, ql, mh, ml, vh, vl;
     int m, small = 0;
-    th[2] = a == b ? 0.0 : (a == 1 ? -1.0 : 1.0);
-    if (a == b) th[3] = -h;
-    else if (a == 0) pendsym_dd_div(-h, 0.0, x0, 0.0, &th[3], &tl[3]);
+    th[2] = fh; tl[2] = fl; th[3] = gh; tl[3] = gl;
     pendsym_dd_mul(h, 0.0, h, 0.0, &h2, &h2l);
     pendsym_dd_mul(h2, h2l, h, 0.0, &h3, &h3l);
     pendsym_dd_mul(h3, h3l, h, 0.0, &h4, &h4l);
-    pendsym_dd_mul(x0, 0.0, x0, 0.0, &x2, &x2l);
-    pendsym_dd_add(th[2], tl[2], th[3], tl[3], &sh, &sl);
-    slope = th[3];                                              /* Σ m t_m = h c'(x0 + h)/W */
-    for (m = 0; m < 400 && small < 2; m++) {{
+    pendsym_dd_mul(xc, xl, xc, xl, &x2, &x2l);
+    pendsym_dd_add(fh, fl, gh, gl, &sh, &sl);
+    vh = gh; vl = gl;                                            /* Σ m t_m = h c'(xc + h)/W */
+    for (m = 0; m < 600 && small < 2; m++) {{
         const double k = (m + 2.0)*(m + 1.0);
         if (b == 0) {{
             pendsym_dd_mul(th[3], tl[3], (m + 1.0)*(m + 1.0), 0.0, &nh, &nl);
             pendsym_dd_mul(nh, nl, h, 0.0, &nh, &nl);
-            pendsym_dd_mul(th[2], tl[2], x0, 0.0, &ph, &pl);
+            pendsym_dd_mul(th[2], tl[2], xc, xl, &ph, &pl);
             pendsym_dd_mul(ph, pl, h2, h2l, &ph, &pl);
             pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
             pendsym_dd_mul(th[1], tl[1], h3, h3l, &ph, &pl);
             pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
-            pendsym_dd_mul(x0, 0.0, k, 0.0, &dh, &dl);
+            pendsym_dd_mul(xc, xl, k, 0.0, &qh, &ql);
         }} else {{
-            pendsym_dd_mul(x0, 0.0, (m + 1.0)*(2.0*m + 1.0), 0.0, &ph, &pl);
+            pendsym_dd_mul(xc, xl, (m + 1.0)*(2.0*m + 1.0), 0.0, &ph, &pl);
             pendsym_dd_mul(ph, pl, h, 0.0, &ph, &pl);
             pendsym_dd_mul(th[3], tl[3], ph, pl, &nh, &nl);
             pendsym_dd_add(x2, x2l, m*(double)m - 1.0, 0.0, &ph, &pl);
             pendsym_dd_mul(ph, pl, h2, h2l, &ph, &pl);
             pendsym_dd_mul(th[2], tl[2], ph, pl, &ph, &pl);
             pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
-            pendsym_dd_mul(th[1], tl[1], 2.0*x0, 0.0, &ph, &pl);
+            pendsym_dd_mul(th[1], tl[1], 2.0*xc, 2.0*xl, &ph, &pl);
             pendsym_dd_mul(ph, pl, h3, h3l, &ph, &pl);
             pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
             pendsym_dd_mul(th[0], tl[0], h4, h4l, &ph, &pl);
             pendsym_dd_add(nh, nl, ph, pl, &nh, &nl);
-            pendsym_dd_mul(x2, x2l, k, 0.0, &dh, &dl);
+            pendsym_dd_mul(x2, x2l, k, 0.0, &qh, &ql);
         }}
-        pendsym_dd_div(-nh, -nl, dh, dl, &nh, &nl);
+        pendsym_dd_div(-nh, -nl, qh, ql, &nh, &nl);
         pendsym_dd_add(sh, sl, nh, nl, &sh, &sl);
-        slope += (m + 2.0)*nh;
-        small = fabs(nh) <= 1e-20*fabs(sh) ? small + 1 : 0;
+        pendsym_dd_mul(nh, nl, m + 2.0, 0.0, &mh, &ml);
+        pendsym_dd_add(vh, vl, mh, ml, &vh, &vl);
+        small = fabs(nh) <= tol*(fabs(sh) + fabs(vh)) ? small + 1 : 0;
         th[0] = th[1]; th[1] = th[2]; th[2] = th[3]; th[3] = nh;
         tl[0] = tl[1]; tl[1] = tl[2]; tl[2] = tl[3]; tl[3] = nl;
     }}
-    pendsym_dd_add(sh, sl, lh*(slope/h), 0.0, &sh, &sl);        /* the low part of h, to first order */
-    pendsym_dd_div(h, 0.0, x0, 0.0, &fh, &fl);                  /* √(1 + h/x0) = √(x1/x0) */
-    pendsym_dd_add(1.0, 0.0, fh, fl, &fh, &fl);
-    {{
-        const double r = sqrt(fh);
-        pendsym_dd_mul(r, 0.0, r, 0.0, &ph, &pl);
-        pendsym_dd_add(fh, fl, -ph, -pl, &ph, &pl);
-        pendsym_dd_add(r, 0.0, ph/(2.0*r), 0.0, &fh, &fl);
+    pendsym_dd_div(vh, vl, h, 0.0, dh, dl);
+    pendsym_dd_add(sh, sl, lh*(*dh), 0.0, rh, rl);               /* the low part of h, to first order */
+}}
+
+/* c(x1)/W(x0) times √(x1/x0) for x1 = x0 + l0 + h + lh: from c(x0)/W = 0 or ∓1 and c'(x0)/W (the Wronskian, exact)
+ * by Taylor steps of at most half the centre (a singular point of the equation at x = 0: radius xc), the last
+ * landing on x1 through the remaining gap (a double-double, never x1 rounded); the terms' tolerance 1e-20 (x0/x1)²
+ * (an error of the dominant solution grows at most as (x/x0)² relative to the recessive one, order 1). */
+static double pendsym_bessel_taylor(int a, int b, double x0, double l0, double h, double lh)
+{{
+    double fh = a == b ? 0.0 : (a == 1 ? -1.0 : 1.0), fl = 0.0, dh = 0.0, dl = 0.0, gh, gl;
+    double xc = x0, xl = l0, rh = h, rl = lh, sh, sl, ph, pl;
+    const double ratio = x0/(x0 + h), tol = 1e-20*ratio*ratio;
+    if (a == b) dh = -1.0;
+    else if (a == 0) pendsym_dd_div(-1.0, 0.0, x0, l0, &dh, &dl);
+    for (;;) {{
+        const int last = rh <= {TAYLOR_RATIO!r}*xc;
+        const double st = last ? rh : {TAYLOR_RATIO!r}*xc, stl = last ? rl : 0.0;
+        pendsym_dd_mul(dh, dl, st, 0.0, &gh, &gl);
+        pendsym_bessel_step(b, xc, xl, fh, fl, gh, gl, st, stl, tol, &fh, &fl, &dh, &dl);
+        if (last) break;
+        pendsym_dd_add(xc, xl, st, 0.0, &xc, &xl);
+        pendsym_dd_add(rh, rl, -st, 0.0, &rh, &rl);
     }}
-    pendsym_dd_mul(sh, sl, fh, fl, &sh, &sl);
-    return sh;
+    pendsym_dd_div(h, lh, x0, l0, &sh, &sl);                    /* √(1 + h/x0) = √(x1/x0) */
+    pendsym_dd_add(1.0, 0.0, sh, sl, &sh, &sl);
+    {{
+        const double r = sqrt(sh);
+        pendsym_dd_mul(r, 0.0, r, 0.0, &ph, &pl);
+        pendsym_dd_add(sh, sl, -ph, -pl, &ph, &pl);
+        pendsym_dd_add(r, 0.0, ph/(2.0*r), 0.0, &sh, &sl);
+    }}
+    pendsym_dd_mul(fh, fl, sh, sl, &fh, &fl);
+    return fh;
 }}
 
 /* Y_a(x0)J_b(x1) − J_a(x0)Y_b(x1) times π√(x0 x1)/2, x0 = x0 + l0 (double-double), x1 = x0 + h. */
@@ -217,20 +242,7 @@ static double pendsym_bessel_cross(double a, double b, double x0, double l0, dou
         if (ia == ib) {{ sd = -s; cd = c; }} else if (ia == 1) {{ sd = -c; cd = -s; }} else {{ sd = c; cd = s; }}
         return sd + ((pa + pb + pa*pb + qa*qb)*sd + ((qa - qb) + (qa*pb - pa*qb))*cd);
     }}
-    if (h <= {TAYLOR_RATIO!r}*x0) {{
-        return pendsym_bessel_taylor(ia, ib, x0, h, lh);
-    }}
-    {{
-        double x1 = x0 + h, bb = x1 - x0, l1 = ((x0 - (x1 - bb)) + (h - bb)) + (l0 + lh);
-        double j0a = j0(x0), j1a = j1(x0), y0a = y0(x0), y1a = y1(x0);
-        double j0b = j0(x1), j1b = j1(x1), y0b = y0(x1), y1b = y1(x1);
-        double ja, ya, jb, yb;
-        if (ia == 0) {{ ja = j0a - l0*j1a; ya = y0a - l0*y1a; }}
-        else {{ ja = j1a + l0*(j0a - j1a/x0); ya = y1a + l0*(y0a - y1a/x0); }}
-        if (ib == 0) {{ jb = j0b - l1*j1b; yb = y0b - l1*y1b; }}
-        else {{ jb = j1b + l1*(j0b - j1b/x1); yb = y1b + l1*(y0b - y1b/x1); }}
-        return (ya*jb - ja*yb)*(3.14159265358979323846264338327950288*sqrt(x0*x1)/2.0);
-    }}
+    return pendsym_bessel_taylor(ia, ib, x0, l0, h, lh);
 }}"""
     return {"dd": DD_C, "quotient_low": quotient, "root_quotient": ROOT_C, "bessel_cross": cross}
 
@@ -252,45 +264,64 @@ def _py_definitions() -> dict[str, str]:
     return ({_horner(p1[1:], "t")}) * t, ({_horner(q1, "t")}) / x
 
 
-def _pendsym_bessel_taylor(a, b, x0, h, lh):
-    """c(x0 + h)/W(x0) times √(x1/x0) for c = Y_a(x0)J_b(x) − J_a(x0)Y_b(x) (W = 2/(πx)): the Taylor series of
-    Bessel's equation of order b about x0, in double-double, rounded once."""
-    t = [(0.0, 0.0), (0.0, 0.0), (0.0 if a == b else (-1.0 if a == 1 else 1.0), 0.0),
-         (-h, 0.0) if a == b else ((0.0, 0.0) if a == 1 else _pendsym_dd_div(-h, 0.0, x0, 0.0))]
+def _pendsym_bessel_step(b, xc, xl, f, g, h, lh, tol):
+    """One Taylor step of c = Y_a(x0)J_b(x) − J_a(x0)Y_b(x) (Bessel's equation of order b) over the gap h + lh from
+    the centre xc + xl, c(xc)/W = f, h·c'(xc)/W = g (double-doubles, W = 2/(πx0)), by the recurrence of the
+    coefficients about xc until two terms fall below tol (relative): (c, c') at xc + h + lh over W, double-doubles."""
+    t = [(0.0, 0.0), (0.0, 0.0), f, g]
     h2 = _pendsym_dd_mul(h, 0.0, h, 0.0)
     h3 = _pendsym_dd_mul(*h2, h, 0.0)
     h4 = _pendsym_dd_mul(*h3, h, 0.0)
-    x2 = _pendsym_dd_mul(x0, 0.0, x0, 0.0)
-    s = _pendsym_dd_add(*t[2], *t[3])
-    slope = t[3][0]                                   # Σ m t_m = h c'(x0 + h)/W
+    x2 = _pendsym_dd_mul(xc, xl, xc, xl)
+    s = _pendsym_dd_add(*f, *g)
+    slope = g                                         # Σ m t_m = h c'(xc + h)/W
     small = 0
     m = 0
-    while m < 400 and small < 2:
+    while m < 600 and small < 2:
         k = (m + 2.0) * (m + 1.0)
         if b == 0:
             n = _pendsym_dd_mul(*_pendsym_dd_mul(*t[3], (m + 1.0) * (m + 1.0), 0.0), h, 0.0)
-            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*_pendsym_dd_mul(*t[2], x0, 0.0), *h2))
+            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*_pendsym_dd_mul(*t[2], xc, xl), *h2))
             n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*t[1], *h3))
-            d = _pendsym_dd_mul(x0, 0.0, k, 0.0)
+            d = _pendsym_dd_mul(xc, xl, k, 0.0)
         else:
-            n = _pendsym_dd_mul(*t[3], *_pendsym_dd_mul(*_pendsym_dd_mul(x0, 0.0, (m + 1.0) * (2.0 * m + 1.0), 0.0), h, 0.0))
+            n = _pendsym_dd_mul(*t[3], *_pendsym_dd_mul(*_pendsym_dd_mul(xc, xl, (m + 1.0) * (2.0 * m + 1.0), 0.0), h, 0.0))
             p = _pendsym_dd_mul(*_pendsym_dd_add(*x2, m * float(m) - 1.0, 0.0), *h2)
             n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*t[2], *p))
-            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*_pendsym_dd_mul(*t[1], 2.0 * x0, 0.0), *h3))
+            n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*_pendsym_dd_mul(*t[1], 2.0 * xc, 2.0 * xl), *h3))
             n = _pendsym_dd_add(*n, *_pendsym_dd_mul(*t[0], *h4))
             d = _pendsym_dd_mul(*x2, k, 0.0)
         nxt = _pendsym_dd_div(-n[0], -n[1], *d)
         s = _pendsym_dd_add(*s, *nxt)
-        slope += (m + 2.0) * nxt[0]
-        small = small + 1 if abs(nxt[0]) <= 1e-20 * abs(s[0]) else 0
+        slope = _pendsym_dd_add(*slope, *_pendsym_dd_mul(*nxt, m + 2.0, 0.0))
+        small = small + 1 if abs(nxt[0]) <= tol * (abs(s[0]) + abs(slope[0])) else 0
         t = [t[1], t[2], t[3], nxt]
         m += 1
-    s = _pendsym_dd_add(*s, lh * (slope / h), 0.0)    # the low part of h, to first order
-    f = _pendsym_dd_add(1.0, 0.0, *_pendsym_dd_div(h, 0.0, x0, 0.0))
-    r = math.sqrt(f[0])
-    e = _pendsym_dd_add(*f, *(-v for v in _pendsym_two_prod(r, r)))
-    f = _pendsym_dd_add(r, 0.0, e[0] / (2.0 * r), 0.0)
-    return _pendsym_dd_mul(*s, *f)[0]
+    d = _pendsym_dd_div(*slope, h, 0.0)
+    return _pendsym_dd_add(*s, lh * d[0], 0.0), d     # the low part of h, to first order
+
+
+def _pendsym_bessel_taylor(a, b, x0, l0, h, lh):
+    """c(x1)/W(x0) times √(x1/x0), x1 = x0 + l0 + h + lh, from c(x0)/W = 0 or ∓1 and c'(x0)/W (the Wronskian) by
+    Taylor steps of at most half the centre, the last landing on x1 through the remaining gap (double-double); the
+    terms' tolerance 1e-20 (x0/x1)² (an error grows at most as (x/x0)² relative to the solution)."""
+    f = (0.0 if a == b else (-1.0 if a == 1 else 1.0), 0.0)
+    d = (-1.0, 0.0) if a == b else ((0.0, 0.0) if a == 1 else _pendsym_dd_div(-1.0, 0.0, x0, l0))
+    ratio = x0 / (x0 + h)
+    tol = 1e-20 * ratio * ratio
+    xc, rest = (x0, l0), (h, lh)
+    while True:
+        last = rest[0] <= {TAYLOR_RATIO!r} * xc[0]
+        st, stl = rest if last else ({TAYLOR_RATIO!r} * xc[0], 0.0)
+        f, d = _pendsym_bessel_step(b, *xc, f, _pendsym_dd_mul(*d, st, 0.0), st, stl, tol)
+        if last:
+            break
+        xc = _pendsym_dd_add(*xc, st, 0.0)
+        rest = _pendsym_dd_add(*rest, -st, 0.0)
+    r2 = _pendsym_dd_add(1.0, 0.0, *_pendsym_dd_div(h, lh, x0, l0))
+    r = math.sqrt(r2[0])
+    e = _pendsym_dd_add(*r2, *(-v for v in _pendsym_two_prod(r, r)))
+    return _pendsym_dd_mul(*f, *_pendsym_dd_add(r, 0.0, e[0] / (2.0 * r), 0.0))[0]
 
 
 def _pendsym_bessel_cross(a, b, x0, l0, h, lh):
@@ -303,22 +334,6 @@ def _pendsym_bessel_cross(a, b, x0, l0, h, lh):
         s, c = s0 + lh * c0, c0 - lh * s0                       # at h + lh, to first order
         sd, cd = (-s, c) if ia == ib else ((-c, -s) if ia == 1 else (c, s))
         return sd + ((pa + pb + pa * pb + qa * qb) * sd + ((qa - qb) + (qa * pb - pa * qb)) * cd)
-    if h <= {TAYLOR_RATIO!r} * x0:
-        return _pendsym_bessel_taylor(ia, ib, x0, h, lh)
-    from scipy.special import jv, yv
-    x1 = x0 + h
-    bb = x1 - x0
-    l1 = ((x0 - (x1 - bb)) + (h - bb)) + (l0 + lh)
-    j0a, j1a, y0a, y1a = float(jv(0, x0)), float(jv(1, x0)), float(yv(0, x0)), float(yv(1, x0))
-    j0b, j1b, y0b, y1b = float(jv(0, x1)), float(jv(1, x1)), float(yv(0, x1)), float(yv(1, x1))
-    if ia == 0:
-        ja, ya = j0a - l0 * j1a, y0a - l0 * y1a
-    else:
-        ja, ya = j1a + l0 * (j0a - j1a / x0), y1a + l0 * (y0a - y1a / x0)
-    if ib == 0:
-        jb, yb = j0b - l1 * j1b, y0b - l1 * y1b
-    else:
-        jb, yb = j1b + l1 * (j0b - j1b / x1), y1b + l1 * (y0b - y1b / x1)
-    return (ya * jb - ja * yb) * (math.pi * math.sqrt(x0 * x1) / 2.0)'''
+    return _pendsym_bessel_taylor(ia, ib, x0, l0, h, lh)'''
     return {"dd": DD_PY, "quotient_low": quotient, "root_quotient": ROOT_PY, "bessel_cross": cross}
 

@@ -15,9 +15,10 @@ C; the engine only does not choose it.
   in both languages here, from the formulas its docstring cites, and is measured through the kernels that
   call it.  :class:`QuotientLow` is the double-double residual of a quotient (fma in C, Dekker's product in
   Python); :class:`BesselCross` the cross products Y_a(x_0)J_b(x_1) − J_a(x_0)Y_b(x_1) of orders 0 and 1.
-* Bessel functions: C calls the C library's POSIX ``j0``, ``j1``, ``y0``, ``y1`` (the file then defines
-  ``_XOPEN_SOURCE``, :func:`c_preamble`); Python calls ``scipy.special.jv``, ``yv`` (AMOS), never scipy's
-  Cephes ``j0`` … ``y1`` (docs/kernel-accuracy.md, "Bessel functions").
+* Bessel functions: no helper calls them since session 13 (``bessel_cross`` continues its Taylor series in steps
+  where it called C's POSIX ``j0`` … ``y1`` and scipy's ``jv``, ``yv``); :data:`NEEDS_XOPEN` and
+  :func:`c_preamble` remain for a helper that would (a C file must then define ``_XOPEN_SOURCE``; never scipy's
+  Cephes ``j0`` … ``y1``: docs/kernel-accuracy.md, "Bessel functions").
 """
 from __future__ import annotations
 
@@ -81,18 +82,21 @@ class BesselCross(Helper):
     for x_0 given as the double-double x_0 + l_0 and x_1 = x_0 + h given by its gap, the double-double h + l_h > 0
     (not by x_1: the gap is what the cross product depends on, and x_0 + h rounded loses it); each route takes the
     low parts to first order.  Today's J, Y (the Wronskian
-    J_1Y_0 − J_0Y_1 = 2/(πx)).  Three routes, by x_0 and h/x_0:
+    J_1Y_0 − J_0Y_1 = 2/(πx)).  Two routes, by x_0:
 
     * x_0 ≥ 25: Hankel's asymptotic expansion, J_n = √(2/(πx))(P cos χ − Q sin χ), Y_n = √(2/(πx))(P sin χ +
       Q cos χ), χ = x − (2n + 1)π/4 (Abramowitz–Stegun 9.2.5–9.2.10; 19 terms hold 1e-22 at x = 25): the
       cross product is (PP' + QQ') sin Δ + (QP' − PQ') cos Δ with Δ = −h − (a − b)π/2, no cancellation, summed
       as sin Δ + [(PP' − 1 + QQ') sin Δ + (QP' − PQ') cos Δ] (P − 1 and Q are O(1/x)), so that its error is
       libm's sin or cos of h and little more;
-    * h ≤ x_0/2: the Taylor series in h of c(x) = Y_a(x_0)J_b(x) − J_a(x_0)Y_b(x), a solution of Bessel's
-      equation of order b, from c(x_0), c'(x_0) (a Wronskian, 2/(πx_0)) by the recurrence of its coefficients
-      about x_0 (radius x_0: the series converges as 2^−m at least), until two terms fall below 1e-18;
-    * otherwise the Bessel functions themselves (C: POSIX j0 … y1; Python: scipy.special.jv, yv), each value
-      at the double x corrected to first order for the low part (J_0' = −J_1, J_1' = J_0 − J_1/x, same for Y).
+    * otherwise the Taylor series of c(x) = Y_a(x_0)J_b(x) − J_a(x_0)Y_b(x), a solution of Bessel's equation of
+      order b, from c(x_0), c'(x_0) (Wronskians, 2/(πx_0): exact) by the recurrence of its coefficients, in
+      double-double, in steps of at most half the centre (the radius is the centre: terms fall as 2^−m at least):
+      one step for h ≤ x_0/2, else c and c' carried from centre to centre, the last step landing on x_1 through
+      the remaining gap (double-double), ⌈log(x_1/x_0)/log 1.5⌉ steps; each step until two terms fall below
+      1e-20·(x_0/x_1)² (an error grows against the recessive solution as (x/x_0)²).  Until session 12 the route for
+      h > x_0/2 was the library's Bessel functions (4–10.8 scaled ulp in the kernels); the steps hold ≤ 0.9 ulp up
+      to q = 1e8 in the rhombus kernels' arguments (derivations/haag1935/ch9_holes/kernels.py, "Domain").
     """
 
     nargs = 6
@@ -105,7 +109,7 @@ HELPERS: tuple[type[Helper], ...] = (QuotientLow, RootQuotient, BesselCross)
 
 
 NEEDS = {"quotient_low": ("dd",), "root_quotient": ("dd",), "bessel_cross": ("dd",)}    # blocks printed before
-NEEDS_XOPEN = frozenset({"bessel_cross"})      # calls POSIX j0 … y1
+NEEDS_XOPEN: frozenset[str] = frozenset()        # helpers that call POSIX j0 … y1 (none since session 13)
 
 
 @functools.lru_cache(maxsize=None)
