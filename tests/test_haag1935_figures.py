@@ -11,7 +11,7 @@ from pendsym import figure, stages, verify
 from derivations.haag1935 import MEMOIR
 from derivations.haag1935.ch7_gravity import figures as ch7
 from derivations.haag1935.ch8_inverted import figures as ch8, truth as ch8_truth
-from derivations.haag1935.ch9_holes import figures as ch9
+from derivations.haag1935.ch9_holes import figures as ch9, rhombus_g2_kernel
 
 pytestmark = pytest.mark.slow
 
@@ -134,15 +134,16 @@ def test_the_derived_G2_meets_the_shot_blade_and_the_printed_one_does_not(plots)
 
 def test_the_blade_is_stable_at_every_k_drawn_and_the_kernel_meets_the_derived_form(plots):
     """β_1 < 0 at every k of the truth; the emitted kernel of G_2/λ (λ = 1) is drawn from k = 1e-8 to its domain's end
-    q = 2.5 (none beyond: it raises there) and agrees with the derived (346) at 40 digits within 1e-14 relative."""
+    q = 5 (rhombus_g2_kernel.Q_ARG; none beyond: it raises there) and agrees with the derived (346) at 40 digits within 1e-14 relative."""
     for k, _ in series(plots, "haag1935.fig.rhombus_G2", "truth"):
         assert ch9.beta1(mp.mpf(k), 15) < 0
     kernel = series(plots, "haag1935.fig.rhombus_G2", "stable kernel")
     derived = dict(series(plots, "haag1935.fig.rhombus_G2", "(346) derived"))
     drawn = [(k, y) for k, y in kernel if y is not None]
-    inside = [k for k, _ in kernel if k <= 2.5]
-    assert [k for k, _ in drawn] == inside and inside[0] == 1e-8 and inside[-1] > 1.5
-    assert all(y is None for k, y in kernel if k > 2.5)
+    end = rhombus_g2_kernel.Q_ARG.hi
+    inside = [k for k, _ in kernel if k <= end]
+    assert [k for k, _ in drawn] == inside and inside[0] == 1e-8 and inside[-1] > 3
+    assert all(y is None for k, y in kernel if k > end)
     for k, y in drawn:
         assert abs(y / derived[k] - 1) < 1e-14, k
 
