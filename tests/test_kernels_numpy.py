@@ -149,28 +149,28 @@ import json, sys
 sys.path.insert(0, {root!r})
 import numpy
 from pendsym.audit import arrays as ar
-from tests.test_kernels_numpy import KERNELS, _load, GENERATED, slow_points
+from tests.test_kernels_numpy import KERNELS, _load, GENERATED, QUICK_POINTS, slow_points
 out = {{}}
 mods = {{}}
 for memoir, name in KERNELS:
     if memoir not in mods:
         mods[memoir] = (_load(memoir), (GENERATED / "python" / f"{{memoir}}.py").read_text())
     mod, code = mods[memoir]
-    r = ar.compare(getattr(mod, name), ar.points(code, name, {n} if {n} < 1000 else slow_points(name)))
+    r = ar.compare(getattr(mod, name), ar.points(code, name, slow_points(name) if {slow} else QUICK_POINTS))
     out[name] = [r["differ"], r["max_ulp"], r["at"]]
 print(json.dumps(out))
 """
 
 
-def _bitwise(n: int) -> dict:
+def _bitwise(slow: bool) -> dict:
     env = {**os.environ, "NPY_DISABLE_CPU_FEATURES": _cpu_dispatch(), "PENDSYM_GENERATED": str(GENERATED)}
-    done = subprocess.run([sys.executable, "-c", BITWISE.format(root=str(ROOT), n=n)], env=env,
+    done = subprocess.run([sys.executable, "-c", BITWISE.format(root=str(ROOT), slow=slow)], env=env,
                           capture_output=True, text=True, check=True)
     return json.loads(done.stdout)
 
 
 def test_with_numpy_calling_libm_the_two_paths_agree_bit_for_bit():
-    got = _bitwise(QUICK_POINTS)
+    got = _bitwise(slow=False)
     assert set(got) == {n for _, n in KERNELS}
     assert {n: r for n, r in got.items() if r[0]} == {}
 
@@ -180,7 +180,7 @@ def test_with_numpy_calling_libm_the_two_paths_agree_bit_for_bit_on_many_points(
     """On the slow tier's points too (session 12: F (170) and J (183) differed at 6 points by up to 3 ulp and at
     one by 1 ulp, while the array path named a branch's arrays inside an expression, which SymPy then multiplied
     in another order than the scalar path: arrays.KernelNumPy.statement)."""
-    got = _bitwise(SLOW_POINTS)
+    got = _bitwise(slow=True)
     assert set(got) == {n for _, n in KERNELS}
     assert {n: r for n, r in got.items() if r[0]} == {}
 
